@@ -1,0 +1,51 @@
+// Lit source elements: the texels of an illumination map rendered from each directional light
+// (the paper's step 1), each carrying E dA of eq. 15-16.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "disc_raster.h"
+#include "dipole.h"
+#include "local_surfels.h"
+#include "material.h"
+
+namespace sss {
+
+struct DirectionalLight {
+  Eigen::Vector3d direction{0, 0, 1};  // from the object towards the light
+  double irradiance = 1.0;             // on a surface facing the light
+
+  // Throws std::invalid_argument for a zero or non-finite direction or a negative or
+  // non-finite irradiance.
+  void validate() const;
+};
+
+struct IlluminationSettings {
+  // Texel edge as a fraction of the smallest z_r of the material: below 1 the sources are finer
+  // than the kernel's narrowest feature and a point sum over them converges.
+  double texel_per_z_r = 0.5;
+  // Largest map side; a larger object gets coarser texels, whose area the source tree then
+  // integrates by splitting them near each receiver.
+  int max_map_size = 4096;
+};
+
+struct IlluminationSamples {
+  std::vector<Eigen::Vector3d> position;  // local mm, on the disc seen by the light
+  std::vector<Eigen::Vector3d> normal;    // unit, turned towards the light
+  std::vector<Rgb> power;                 // E dA per channel: irradiance * Ft(eta, theta_i) * texel area
+  std::vector<std::uint16_t> light;       // which light's map the sample came from
+  std::vector<OrthoView> maps;            // one per light
+  std::size_t size() const { return position.size(); }
+};
+
+// The illumination map of eq. 15 as point sources. Only what a light sees is lit
+// (self-shadowing), and the cosine of eq. 15 cancels against the texel's surface area
+// texel_area / cos(theta_i). Normals are turned towards the light, so a cloud with
+// inconsistently oriented normals is lit on the side the light sees.
+IlluminationSamples illuminate(const LocalSurfels& surfels, const Material& material,
+                               const std::vector<DirectionalLight>& lights,
+                               const IlluminationSettings& settings);
+
+}  // namespace sss

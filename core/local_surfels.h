@@ -1,0 +1,24 @@
+// Surfels in the renderer's local millimetre frame (see LocalFrame).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "surfel_cloud.h"
+
+namespace sss {
+
+struct LocalSurfels {
+  LocalFrame frame;
+  std::vector<Eigen::Vector3d> positions;  // mm, relative to frame.origin
+  std::vector<Eigen::Vector3d> normals;    // unit
+  std::vector<Rgb> albedo;                 // empty or one per surfel
+  double radius = 0.0;                     // mm
+  Bounds bounds;                           // of positions, mm
+
+  // The cloud must have been validated (SurfelCloud::validate).
+  static LocalSurfels from(const SurfelCloud& cloud, double mm_per_unit);
+  std::size_t size() const { return positions.size(); }
+};
+
+}  // namespace sss

@@ -1,0 +1,81 @@
+#include "procedural_shapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sss {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+void check(double length, const char* name) {
+  if (!std::isfinite(length) || length <= 0.0)
+    throw std::invalid_argument(std::string("[sss::procedural_shapes] ") + name +
+                                " must be finite and > 0");
+}
+
+void finish(SurfelCloud& cloud, double spacing) {
+  // Even rings leave gaps of up to about one spacing between neighbours along the diagonal.
+  cloud.radius = 0.8 * spacing;
+  cloud.validate();
+}
+}  // namespace
+
+SurfelCloud make_slab(double disc_radius, double spacing) {
+  check(disc_radius, "disc radius");
+  check(spacing, "spacing");
+  SurfelCloud cloud;
+  const int n = static_cast<int>(std::floor(disc_radius / spacing));
+  for (int j = -n; j <= n; ++j)
+    for (int i = -n; i <= n; ++i)
+      if ((i * i + j * j) * spacing * spacing <= disc_radius * disc_radius) {
+        cloud.positions.emplace_back(i * spacing, j * spacing, 0.0);
+        cloud.normals.emplace_back(0.0, 0.0, 1.0);
+      }
+  cloud.radius = 0.75 * spacing;
+  cloud.validate();
+  return cloud;
+}
+
+SurfelCloud make_torus(double R, double r, double spacing) {
+  check(R, "ring radius");
+  check(r, "tube radius");
+  check(spacing, "spacing");
+  SurfelCloud cloud;
+  const int rings = std::max(3, static_cast<int>(std::round(2 * kPi * r / spacing)));
+  for (int a = 0; a < rings; ++a) {
+    const double v = 2 * kPi * (a + 0.5) / rings;
+    const double ring = R + r * std::cos(v);
+    const int count = std::max(3, static_cast<int>(std::round(2 * kPi * ring / spacing)));
+    for (int b = 0; b < count; ++b) {
+      const double u = 2 * kPi * (b + 0.5 * (a % 2)) / count;
+      const Eigen::Vector3d n(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
+      cloud.positions.emplace_back(ring * std::cos(u), ring * std::sin(u), r * std::sin(v));
+      cloud.normals.push_back(n);
+    }
+  }
+  finish(cloud, spacing);
+  return cloud;
+}
+
+SurfelCloud make_sphere(double r, double spacing) {
+  check(r, "radius");
+  check(spacing, "spacing");
+  SurfelCloud cloud;
+  const int rings = std::max(2, static_cast<int>(std::round(kPi * r / spacing)));
+  for (int a = 0; a < rings; ++a) {
+    const double theta = kPi * (a + 0.5) / rings;
+    const int count = std::max(3, static_cast<int>(std::round(2 * kPi * r * std::sin(theta) / spacing)));
+    for (int b = 0; b < count; ++b) {
+      const double phi = 2 * kPi * (b + 0.5 * (a % 2)) / count;
+      const Eigen::Vector3d n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                              std::cos(theta));
+      cloud.positions.push_back(r * n);
+      cloud.normals.push_back(n);
+    }
+  }
+  finish(cloud, spacing);
+  return cloud;
+}
+
+}  // namespace sss

@@ -1,0 +1,19 @@
+// Surfel clouds the project makes itself: the demo shape and the shapes of the tests.
+#pragma once
+
+#include "surfel_cloud.h"
+
+namespace sss {
+
+// A square grid of the given spacing clipped to a disc of radius `disc_radius` in the plane
+// z = 0, normals +z, disc radius 0.75 spacing (covers the plane). mm or any unit.
+SurfelCloud make_slab(double disc_radius, double spacing);
+
+// A torus around the z axis (ring radius R, tube radius r), sampled in rings about `spacing`
+// apart so that the density is even, normals outward.
+SurfelCloud make_torus(double R, double r, double spacing);
+
+// A sphere of radius r in latitude rings about `spacing` apart, normals outward.
+SurfelCloud make_sphere(double r, double spacing);
+
+}  // namespace sss

@@ -1,0 +1,215 @@
+#include "source_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace sss {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Texels split near a receiver: into pieces no larger than max(z_r / 2, distance / 8),
+// at most this many per side.
+constexpr int kMaxSplit = 64;
+constexpr double kSplitDistanceRatio = 8.0;
+
+double quad_form(const std::array<double, 6>& m, const Eigen::Vector3d& u) {
+  return m[0] * u.x() * u.x() + m[3] * u.y() * u.y() + m[5] * u.z() * u.z() +
+         2.0 * (m[1] * u.x() * u.y() + m[2] * u.x() * u.z() + m[4] * u.y() * u.z());
+}
+
+// Sum over a cluster of W g(|y - x|) by a second-order Taylor expansion about the centroid y0:
+// W g(D) + 1/2 [g''(D) u'Mu + g'(D)/D (tr M - u'Mu)], u = (y0 - x) / D.
+double expanded_term(double z, double s_tr, const Eigen::Vector3d& y0, const Eigen::Vector3d& x,
+                     double weight, const std::array<double, 6>& second) {
+  const Eigen::Vector3d offset = y0 - x;
+  const double D = offset.norm();
+  const Eigen::Vector3d u = offset / D;
+  const DipoleTerm g = dipole_term(z, s_tr, D);
+  const double radial = quad_form(second, u);
+  const double trace = second[0] + second[3] + second[5];
+  return weight * g.value + 0.5 * (g.d2 * radial + g.d1 / D * (trace - radial));
+}
+
+}  // namespace
+
+SourceTree::SourceTree(const IlluminationSamples& samples, const Dipole& dipole,
+                       const SourceTreeSettings& settings)
+    : dipole_(dipole), settings_(settings) {
+  if (!(settings.theta >= 0.0 && settings.theta < 1.0) || settings.leaf_size < 1 ||
+      !(settings.kernel_tolerance > 0.0 && settings.kernel_tolerance < 1.0))
+    throw std::invalid_argument(
+        "[sss::SourceTree] theta must be in [0, 1), leaf_size >= 1, kernel_tolerance in (0, 1)");
+  cutoff_ = dipole.max_support_radius(settings.kernel_tolerance);
+  split_spacing_ = 0.5 * dipole.min_z_r();
+  const int n = static_cast<int>(samples.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  position_.resize(n);
+  normal_.resize(n);
+  power_.resize(n);
+  texel_u_.resize(n);
+  texel_v_.resize(n);
+  // Build over a copy in tree order; the permutation is applied as the tree is built.
+  position_ = samples.position;
+  normal_ = samples.normal;
+  power_ = samples.power;
+  for (int k = 0; k < n; ++k) {
+    const OrthoView& map = samples.maps[samples.light[k]];
+    const Eigen::Vector3d& nk = normal_[k];
+    // A texel edge along the light, slid onto the disc's plane (grazing capped at cos 0.05).
+    const double cos_i = std::max(0.05, nk.dot(map.w));
+    texel_u_[k] = map.pixel * (map.u - nk.dot(map.u) / cos_i * map.w);
+    texel_v_[k] = map.pixel * (map.v - nk.dot(map.v) / cos_i * map.w);
+  }
+  if (n > 0) {
+    nodes_.reserve(2 * static_cast<std::size_t>(n) / std::max(1, settings.leaf_size) + 2);
+    build(0, n);
+  }
+}
+
+int SourceTree::build(int first, int last) {
+  Node node;
+  node.first = first;
+  node.last = last;
+  node.lo = node.hi = position_[first];
+  for (int k = first; k < last; ++k) {
+    node.lo = node.lo.cwiseMin(position_[k]);
+    node.hi = node.hi.cwiseMax(position_[k]);
+  }
+  for (int c = 0; c < 3; ++c) {
+    const DipoleChannel& ch = dipole_.channel[c];
+    for (int k = first; k < last; ++k) node.weight[c] += power_[k][c];
+    for (int p = 0; p < 2; ++p) {
+      // Real source z_r below, virtual source z_v above the surface (eq. 12, 13).
+      const double offset = p == 0 ? -ch.z_r : ch.z_v;
+      Pole& pole = node.pole[c][p];
+      auto source = [&](int k) -> Eigen::Vector3d { return position_[k] + offset * normal_[k]; };
+      if (node.weight[c] > 0.0) {
+        for (int k = first; k < last; ++k) pole.centroid += power_[k][c] * source(k);
+        pole.centroid /= node.weight[c];
+      } else {
+        pole.centroid = source(first);
+      }
+      for (int k = first; k < last; ++k) {
+        const Eigen::Vector3d d = source(k) - pole.centroid;
+        const double w = power_[k][c];
+        pole.second[0] += w * d.x() * d.x();
+        pole.second[1] += w * d.x() * d.y();
+        pole.second[2] += w * d.x() * d.z();
+        pole.second[3] += w * d.y() * d.y();
+        pole.second[4] += w * d.y() * d.z();
+        pole.second[5] += w * d.z() * d.z();
+        pole.radius = std::max(pole.radius, d.norm());
+      }
+    }
+  }
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.push_back(node);
+  if (last - first > settings_.leaf_size) {
+    int axis;
+    (node.hi - node.lo).maxCoeff(&axis);
+    const int mid = first + (last - first) / 2;
+    std::vector<int> order(last - first);
+    std::iota(order.begin(), order.end(), first);
+    std::nth_element(order.begin(), order.begin() + (mid - first), order.end(),
+                     [&](int a, int b) { return position_[a][axis] < position_[b][axis]; });
+    auto permute = [&](auto& values) {
+      std::vector<std::decay_t<decltype(values[0])>> part(last - first);
+      for (int k = 0; k < last - first; ++k) part[k] = values[order[k]];
+      std::copy(part.begin(), part.end(), values.begin() + first);
+    };
+    permute(position_);
+    permute(normal_);
+    permute(power_);
+    permute(texel_u_);
+    permute(texel_v_);
+    const int left = build(first, mid);
+    const int right = build(mid, last);
+    nodes_[index].left = left;
+    nodes_[index].right = right;
+  }
+  return index;
+}
+
+bool SourceTree::well_separated(const Node& node, const Eigen::Vector3d& x) const {
+  for (const auto& poles : node.pole)
+    for (const Pole& pole : poles)
+      if (!(pole.radius < settings_.theta * (pole.centroid - x).norm())) return false;
+  return true;
+}
+
+void SourceTree::add_node(const Node& node, const Eigen::Vector3d& x, Rgb& sum) const {
+  for (int c = 0; c < 3; ++c) {
+    if (node.weight[c] <= 0.0) continue;
+    const DipoleChannel& ch = dipole_.channel[c];
+    const Pole& real = node.pole[c][0];
+    const Pole& virt = node.pole[c][1];
+    sum[c] += ch.alpha_prime / (4.0 * kPi) *
+              (expanded_term(ch.z_r, ch.s_tr, real.centroid, x, node.weight[c], real.second) +
+               expanded_term(ch.z_v, ch.s_tr, virt.centroid, x, node.weight[c], virt.second));
+  }
+}
+
+void SourceTree::add_sample(int k, const Eigen::Vector3d& x, const KernelWindow& window,
+                            Rgb& sum) const {
+  const Eigen::Vector3d& p = position_[k];
+  const Eigen::Vector3d& n = normal_[k];
+  const double distance = (p - x).norm();
+  const double piece = std::max(split_spacing_, distance / kSplitDistanceRatio);
+  const double texel = std::max(texel_u_[k].norm(), texel_v_[k].norm());
+  const int split = texel > piece ? std::min(kMaxSplit, static_cast<int>(std::ceil(texel / piece)))
+                                  : 1;
+  const double share = 1.0 / (static_cast<double>(split) * split);
+  for (int b = 0; b < split; ++b) {
+    for (int a = 0; a < split; ++a) {
+      const Eigen::Vector3d q = split == 1 ? p
+                                           : Eigen::Vector3d(p + ((a + 0.5) / split - 0.5) * texel_u_[k] +
+                                                             ((b + 0.5) / split - 0.5) * texel_v_[k]);
+      const double w = share * window.weight((q - x).norm());
+      if (w == 0.0) continue;
+      for (int c = 0; c < 3; ++c) {
+        const DipoleChannel& ch = dipole_.channel[c];
+        const double d_r = (q - ch.z_r * n - x).norm();
+        const double d_v = (q + ch.z_v * n - x).norm();
+        sum[c] += w * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
+      }
+    }
+  }
+}
+
+Rgb SourceTree::B(const Eigen::Vector3d& x, const KernelWindow& window) const {
+  Rgb sum{0.0, 0.0, 0.0};
+  if (nodes_.empty()) return sum;
+  int stack[256];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    const Eigen::Vector3d outside = (node.lo - x).cwiseMax(x - node.hi).cwiseMax(0.0);
+    const double near_gap = outside.norm();
+    if (near_gap > cutoff_) continue;
+    const double far_gap = (node.hi - x).cwiseAbs().cwiseMax((node.lo - x).cwiseAbs()).norm();
+    bool whole = true;  // the window weight is the same (and 1) over the whole node
+    if (window.part == KernelWindow::Part::Near) {
+      if (near_gap >= window.r1) continue;
+      whole = far_gap <= window.r0;
+    } else if (window.part == KernelWindow::Part::Far) {
+      if (far_gap <= window.r0) continue;
+      whole = near_gap >= window.r1;
+    }
+    if (whole && well_separated(node, x)) {
+      add_node(node, x, sum);
+    } else if (node.left < 0) {
+      for (int k = node.first; k < node.last; ++k) add_sample(k, x, window, sum);
+    } else {
+      stack[top++] = node.left;
+      stack[top++] = node.right;
+    }
+  }
+  for (double& v : sum) v /= kPi;
+  return sum;
+}
+
+}  // namespace sss

@@ -1,0 +1,67 @@
+// Hierarchical sum of eq. 16/17 over the lit source elements: a binary tree over the samples,
+// whose far nodes are summed by a second-order expansion of the dipole around each node's
+// centroid (a treecode), and whose near leaves are evaluated sample by sample, splitting a
+// sample's texel when it is coarser than the kernel's local scale.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "dipole.h"
+#include "illumination.h"
+#include "kernel_window.h"
+
+namespace sss {
+
+struct SourceTreeSettings {
+  // A node of radius S at distance D is summed as a whole when S < theta D; 0 sums every sample.
+  double theta = 0.1;
+  int leaf_size = 8;
+  // Sources farther than the support radius of this fraction of the total reflectance are
+  // skipped (the kernel's reach, DipoleChannel::support_radius).
+  double kernel_tolerance = 1e-7;
+};
+
+class SourceTree {
+ public:
+  SourceTree(const IlluminationSamples& samples, const Dipole& dipole,
+             const SourceTreeSettings& settings);
+
+  // B(x) = 1/pi Sum E dA Rd(x_i, x) (eq. 17) over the part of the kernel the window keeps.
+  Rgb B(const Eigen::Vector3d& x, const KernelWindow& window = KernelWindow::all()) const;
+
+  std::size_t node_count() const { return nodes_.size(); }
+  double cutoff_radius() const { return cutoff_; }
+
+ private:
+  // One pole (real or virtual source) of one channel summed over a node's samples.
+  struct Pole {
+    Eigen::Vector3d centroid{Eigen::Vector3d::Zero()};
+    std::array<double, 6> second{};  // xx xy xz yy yz zz about the centroid
+    double radius = 0.0;             // farthest source from the centroid
+  };
+  struct Node {
+    Eigen::Vector3d lo, hi;                 // box of the sample positions
+    std::array<double, 3> weight{};         // Sum E dA per channel
+    std::array<std::array<Pole, 2>, 3> pole;  // [channel][real, virtual]
+    int first, last;                        // sample range [first, last)
+    int left = -1, right = -1;
+  };
+
+  int build(int first, int last);
+  bool well_separated(const Node& node, const Eigen::Vector3d& x) const;
+  void add_node(const Node& node, const Eigen::Vector3d& x, Rgb& sum) const;
+  void add_sample(int k, const Eigen::Vector3d& x, const KernelWindow& window, Rgb& sum) const;
+
+  std::vector<Eigen::Vector3d> position_, normal_;
+  std::vector<Rgb> power_;
+  std::vector<Eigen::Vector3d> texel_u_, texel_v_;  // a texel's edges on its disc's plane
+  std::vector<Node> nodes_;
+  Dipole dipole_;
+  SourceTreeSettings settings_;
+  double cutoff_ = 0.0;
+  double split_spacing_ = 0.0;  // sub-sample spacing near a receiver: z_r / 2
+};
+
+}  // namespace sss

@@ -1,0 +1,131 @@
+#include "surfel_cloud.h"
+
+#include <flann/flann.hpp>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace sss {
+
+void Bounds::extend(const Eigen::Vector3d& p) {
+  if (empty) {
+    min = max = p;
+    empty = false;
+    return;
+  }
+  min = min.cwiseMin(p);
+  max = max.cwiseMax(p);
+}
+
+std::string CloudReport::summary() const {
+  std::ostringstream s;
+  s << "kept " << kept << " of " << input << " points";
+  if (dropped() > 0) {
+    s << "; dropped " << nonfinite_position << " with non-finite position, " << nonfinite_normal
+      << " with non-finite normal, " << zero_normal << " with zero normal";
+  }
+  if (renormalised > 0) s << "; renormalised " << renormalised << " normals";
+  return s.str();
+}
+
+CloudReport SurfelCloud::validate() {
+  if (normals.size() != positions.size()) {
+    std::ostringstream msg;
+    msg << "[sss::SurfelCloud::validate] " << normals.size() << " normals for "
+        << positions.size() << " positions";
+    throw std::invalid_argument(msg.str());
+  }
+  if (!albedo.empty() && albedo.size() != positions.size()) {
+    std::ostringstream msg;
+    msg << "[sss::SurfelCloud::validate] " << albedo.size() << " albedo values for "
+        << positions.size() << " positions";
+    throw std::invalid_argument(msg.str());
+  }
+  if (!positions.empty() && (!std::isfinite(radius) || radius <= 0.0)) {
+    std::ostringstream msg;
+    msg << "[sss::SurfelCloud::validate] radius = " << radius << " must be finite and > 0";
+    throw std::invalid_argument(msg.str());
+  }
+  const bool had_index = input_index.size() == positions.size();
+  CloudReport report;
+  report.input = positions.size();
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (!albedo.empty()) {
+      for (double a : albedo[i]) {
+        if (!(a >= 0.0 && a <= 1.0)) {
+          std::ostringstream msg;
+          msg << "[sss::SurfelCloud::validate] albedo " << a << " of point " << i
+              << " must be in [0, 1]";
+          throw std::invalid_argument(msg.str());
+        }
+      }
+    }
+    if (!positions[i].allFinite()) {
+      ++report.nonfinite_position;
+      continue;
+    }
+    if (!normals[i].allFinite()) {
+      ++report.nonfinite_normal;
+      continue;
+    }
+    const double length = normals[i].norm();
+    if (!(length > 1e-12)) {
+      ++report.zero_normal;
+      continue;
+    }
+    if (std::fabs(length - 1.0) > 1e-9) ++report.renormalised;
+    positions[out] = positions[i];
+    normals[out] = normals[i] / length;
+    if (!albedo.empty()) albedo[out] = albedo[i];
+    const std::size_t original = had_index ? input_index[i] : i;
+    if (input_index.size() <= out) input_index.resize(out + 1);
+    input_index[out] = original;
+    ++out;
+  }
+  positions.resize(out);
+  normals.resize(out);
+  if (!albedo.empty()) albedo.resize(out);
+  input_index.resize(out);
+  report.kept = out;
+  return report;
+}
+
+Bounds SurfelCloud::bounds() const {
+  Bounds b;
+  for (const auto& p : positions) b.extend(p);
+  return b;
+}
+
+double SurfelCloud::mean_spacing() const {
+  if (positions.size() < 2) return 0.0;
+  const Eigen::Vector3d origin = bounds().center();
+  std::vector<double> coords(positions.size() * 3);
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) coords[3 * i + k] = positions[i][k] - origin[k];
+  flann::Matrix<double> data(coords.data(), positions.size(), 3);
+  flann::Index<flann::L2<double>> index(data, flann::KDTreeSingleIndexParams(16));
+  index.buildIndex();
+  std::vector<std::vector<std::size_t>> ids;
+  std::vector<std::vector<double>> dist2;
+  flann::SearchParams params;
+  params.cores = 0;
+  // Ask for several neighbours so duplicates (distance 0) do not hide the spacing.
+  const int k = static_cast<int>(std::min<std::size_t>(positions.size(), 8));
+  index.knnSearch(data, ids, dist2, k, params);
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (const auto& row : dist2) {
+    for (double d2 : row) {
+      if (d2 > 0.0) {
+        sum += std::sqrt(d2);
+        ++count;
+        break;
+      }
+    }
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+}  // namespace sss
