@@ -35,6 +35,8 @@ DipoleTerm dipole_term(double z, double s, double d) {
 }
 
 double DipoleChannel::Rd_from_distances(double d_r, double d_v) const {
+  d_r = std::max(d_r, z_r);
+  d_v = std::max(d_v, z_v);
   const double real = z_r * (1.0 + s_tr * d_r) * std::exp(-s_tr * d_r) / (d_r * d_r * d_r);
   const double virt = z_v * (1.0 + s_tr * d_v) * std::exp(-s_tr * d_v) / (d_v * d_v * d_v);
   return alpha_prime / (4.0 * kPi) * (real + virt);

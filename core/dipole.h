@@ -23,6 +23,10 @@ struct DipoleChannel {
   double Rd(double r) const;
   // Rd for a source at x_i with normal n_i and a receiver at x_o, given the distances
   // d_r = |x_i - z_r n_i - x_o| and d_v = |x_i + z_v n_i - x_o| (eq. 3, 12, 13).
+  // The distances are clamped at their planar minima z_r and z_v: on a plane this changes
+  // nothing, while on thin or curved parts a receiver lying z_r under another lit surface
+  // would otherwise meet the real source's 1/d^3 singularity (its sum over a surface grows
+  // as 1/d); so the kernel never exceeds Rd(0).
   double Rd_from_distances(double d_r, double d_v) const;
   // Integral of Rd 2 pi r dr over the whole plane: total diffuse reflectance (closed form).
   double total_diffuse_reflectance() const;

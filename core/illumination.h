@@ -24,8 +24,11 @@ struct DirectionalLight {
 
 struct IlluminationSettings {
   // Texel edge as a fraction of the smallest z_r of the material: below 1 the sources are finer
-  // than the kernel's narrowest feature and a point sum over them converges.
-  double texel_per_z_r = 0.5;
+  // than the kernel's narrowest feature and a point sum over them converges. On curved scans
+  // the error is first order in the texel (it comes from where the lit area ends, at the
+  // terminator, where a texel covers texel / cos(theta_i) of surface): on the bunny z_r / 2
+  // differs from z_r / 4 by 1 % mean, and z_r / 4 from z_r / 8 by 0.4 %.
+  double texel_per_z_r = 0.25;
   // Largest map side; a larger object gets coarser texels, whose area the source tree then
   // integrates by splitting them near each receiver.
   int max_map_size = 4096;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 namespace sss {
@@ -13,6 +12,8 @@ constexpr double kPi = 3.14159265358979323846;
 // at most this many per side.
 constexpr int kMaxSplit = 64;
 constexpr double kSplitDistanceRatio = 8.0;
+// Deeper nodes stay leaves; bounds the traversal stack.
+constexpr int kMaxDepth = 200;
 
 double quad_form(const std::array<double, 6>& m, const Eigen::Vector3d& u) {
   return m[0] * u.x() * u.x() + m[3] * u.y() * u.y() + m[5] * u.z() * u.z() +
@@ -44,17 +45,12 @@ SourceTree::SourceTree(const IlluminationSamples& samples, const Dipole& dipole,
   cutoff_ = dipole.max_support_radius(settings.kernel_tolerance);
   split_spacing_ = 0.5 * dipole.min_z_r();
   const int n = static_cast<int>(samples.size());
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  position_.resize(n);
-  normal_.resize(n);
-  power_.resize(n);
-  texel_u_.resize(n);
-  texel_v_.resize(n);
-  // Build over a copy in tree order; the permutation is applied as the tree is built.
+  // Copies that the build puts in tree order.
   position_ = samples.position;
   normal_ = samples.normal;
   power_ = samples.power;
+  texel_u_.resize(n);
+  texel_v_.resize(n);
   for (int k = 0; k < n; ++k) {
     const OrthoView& map = samples.maps[samples.light[k]];
     const Eigen::Vector3d& nk = normal_[k];
@@ -65,11 +61,11 @@ SourceTree::SourceTree(const IlluminationSamples& samples, const Dipole& dipole,
   }
   if (n > 0) {
     nodes_.reserve(2 * static_cast<std::size_t>(n) / std::max(1, settings.leaf_size) + 2);
-    build(0, n);
+    build(0, n, 0);
   }
 }
 
-int SourceTree::build(int first, int last) {
+int SourceTree::build(int first, int last, int depth) {
   Node node;
   node.first = first;
   node.last = last;
@@ -107,14 +103,21 @@ int SourceTree::build(int first, int last) {
   }
   const int index = static_cast<int>(nodes_.size());
   nodes_.push_back(node);
-  if (last - first > settings_.leaf_size) {
-    int axis;
-    (node.hi - node.lo).maxCoeff(&axis);
-    const int mid = first + (last - first) / 2;
-    std::vector<int> order(last - first);
-    std::iota(order.begin(), order.end(), first);
-    std::nth_element(order.begin(), order.begin() + (mid - first), order.end(),
-                     [&](int a, int b) { return position_[a][axis] < position_[b][axis]; });
+  // Split the box's longest side near its middle (not at a median: a median depends on the
+  // order of nearly equal coordinates, which rounding can flip, so a shifted or rescaled
+  // scene would get another tree and differ by the expansion's error). The plane sits a
+  // little off the middle, where symmetric shapes and regular texel rows put no samples.
+  int axis;
+  const double extent = (node.hi - node.lo).maxCoeff(&axis);
+  if (last - first > settings_.leaf_size && extent > 0.0 && depth < kMaxDepth) {
+    const double middle = node.lo[axis] + 0.5137 * extent;
+    std::vector<int> order;
+    order.reserve(last - first);
+    for (int k = first; k < last; ++k)
+      if (position_[k][axis] < middle) order.push_back(k);
+    const int mid = first + static_cast<int>(order.size());
+    for (int k = first; k < last; ++k)
+      if (!(position_[k][axis] < middle)) order.push_back(k);
     auto permute = [&](auto& values) {
       std::vector<std::decay_t<decltype(values[0])>> part(last - first);
       for (int k = 0; k < last - first; ++k) part[k] = values[order[k]];
@@ -125,8 +128,8 @@ int SourceTree::build(int first, int last) {
     permute(power_);
     permute(texel_u_);
     permute(texel_v_);
-    const int left = build(first, mid);
-    const int right = build(mid, last);
+    const int left = build(first, mid, depth + 1);
+    const int right = build(mid, last, depth + 1);
     nodes_[index].left = left;
     nodes_[index].right = right;
   }
@@ -134,9 +137,14 @@ int SourceTree::build(int first, int last) {
 }
 
 bool SourceTree::well_separated(const Node& node, const Eigen::Vector3d& x) const {
-  for (const auto& poles : node.pole)
-    for (const Pole& pole : poles)
-      if (!(pole.radius < settings_.theta * (pole.centroid - x).norm())) return false;
+  // The expansion also needs the receiver beyond the clamp of Rd_from_distances (z_v >= z_r).
+  for (int c = 0; c < 3; ++c) {
+    for (const Pole& pole : node.pole[c]) {
+      const double distance = (pole.centroid - x).norm();
+      if (!(pole.radius < settings_.theta * distance) || distance <= 2.0 * dipole_.channel[c].z_v)
+        return false;
+    }
+  }
   return true;
 }
 
@@ -182,7 +190,7 @@ void SourceTree::add_sample(int k, const Eigen::Vector3d& x, const KernelWindow&
 Rgb SourceTree::B(const Eigen::Vector3d& x, const KernelWindow& window) const {
   Rgb sum{0.0, 0.0, 0.0};
   if (nodes_.empty()) return sum;
-  int stack[256];
+  int stack[kMaxDepth + 2];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {

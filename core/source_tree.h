@@ -49,7 +49,7 @@ class SourceTree {
     int left = -1, right = -1;
   };
 
-  int build(int first, int last);
+  int build(int first, int last, int depth);
   bool well_separated(const Node& node, const Eigen::Vector3d& x) const;
   void add_node(const Node& node, const Eigen::Vector3d& x, Rgb& sum) const;
   void add_sample(int k, const Eigen::Vector3d& x, const KernelWindow& window, Rgb& sum) const;

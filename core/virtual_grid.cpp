@@ -86,13 +86,22 @@ VirtualGrid VirtualGrid::build(const LocalSurfels& surfels, const Dipole& dipole
         << "] (2^level points per axis)";
     throw std::invalid_argument(msg.str());
   }
+  VirtualGrid grid = prune(surfels, level, settings.memory_cap_bytes);
+  // The corner count that chose an automatic level is a lower bound of what the radius search
+  // keeps; step down until the budget holds.
+  while (settings.level == 0 && grid.points_.size() > settings.point_budget && level > 1)
+    grid = prune(surfels, --level, settings.memory_cap_bytes);
+  return grid;
+}
+
+VirtualGrid VirtualGrid::prune(const LocalSurfels& surfels, int level, std::size_t memory_cap) {
   const std::size_t dense = dense_points(surfels, level);
   if (dense > std::numeric_limits<std::size_t>::max() / 4 ||
-      dense * 4 > settings.memory_cap_bytes) {
+      dense * 4 > memory_cap) {
     std::ostringstream msg;
     msg << "[sss::VirtualGrid] level " << level << " (" << (1 << level)
         << " points per axis) needs " << dense * 4.0 / (1 << 20)
-        << " MiB for its index; the cap is " << settings.memory_cap_bytes / double(1 << 20)
+        << " MiB for its index; the cap is " << memory_cap / double(1 << 20)
         << " MiB";
     throw std::invalid_argument(msg.str());
   }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -33,6 +34,7 @@ class VirtualGrid {
   int level() const { return level_; }
   double spacing() const { return spacing_; }
   const std::array<int, 3>& dims() const { return dims_; }
+  const Eigen::Vector3d& origin() const { return origin_; }  // first grid point, local mm
   const std::vector<Eigen::Vector3d>& points() const { return points_; }  // kept, local mm
 
   // Trilinear interpolation of per-kept-point values at x; corners that were pruned are left
@@ -43,6 +45,8 @@ class VirtualGrid {
   static std::size_t dense_points(const LocalSurfels& surfels, int level);
 
  private:
+  // The grid at `level` with the points that have a surfel within one cell diagonal.
+  static VirtualGrid prune(const LocalSurfels& surfels, int level, std::size_t memory_cap);
   std::int64_t flat(int i, int j, int k) const {
     return (static_cast<std::int64_t>(k) * dims_[1] + j) * dims_[0] + i;
   }
