@@ -1,0 +1,35 @@
+// Command-line parsing for sss_render: every flag, its default and its unit in one table.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "material.h"
+
+namespace sss::cli {
+
+struct Options {
+  std::string input;  // empty: the procedural demo shape
+  std::string output_png = "sss_render.png";
+  std::string linear_pfm, stats_json;
+  std::string material = "marble";
+  bool custom_material = false;
+  Rgb sigma_a{}, sigma_s{};
+  double eta = 1.3;
+  double scale = 1.0;  // mm per scene unit
+  std::vector<Eigen::Vector3d> light_dirs;
+  double light_irradiance = 1.0;
+  Eigen::Vector3d view_dir{0.0, -1.0, 0.6};
+  Eigen::Vector3d up{0.0, 0.0, 1.0};
+  int width = 512, height = 512;
+  std::string method = "reference";
+  double texel_per_z_r = 0.25;
+  bool help = false;
+};
+
+// Throws std::invalid_argument with a message naming the flag and what is wrong.
+Options parse(int argc, char** argv);
+std::string usage();
+
+}  // namespace sss::cli

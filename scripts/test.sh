@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Set-up, build, and every test: the release suite (core, hard cases, shared scans), then the
+# core tests again built with AddressSanitizer and UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+bash scripts/build.sh
+echo "== release build: all tests"
+ctest --test-dir build --output-on-failure -j1
+echo "== ASan + UBSan build: core tests"
+mkdir -p build-sanitize
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSS_SANITIZE=ON \
+  -DSSS_BUILD_EXAMPLES=OFF > build-sanitize/configure.log 2>&1 \
+  || { cat build-sanitize/configure.log; exit 1; }
+cmake --build build-sanitize -j"$(nproc)" --target sss_core_tests
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build-sanitize --output-on-failure -L core -j1
