@@ -46,7 +46,7 @@ TEST(Scans, ReferenceConvergesOnTheBunny) {
   EXPECT_LT(change.mean, 0.005);
 }
 
-// The CPU grid method against the reference on the dragon (100,250 surfels).
+// The CPU grid method against the reference on the dragon (100,250 vertices).
 TEST(Scans, GridMethodAgainstReferenceOnTheDragon) {
   const SurfelCloud dragon = load_or_skip("dragon_vrip_res2.ply.gz");
   if (dragon.empty()) GTEST_SKIP() << "../shared/data/dragon_vrip_res2.ply.gz is absent";
@@ -63,8 +63,11 @@ TEST(Scans, GridMethodAgainstReferenceOnTheDragon) {
   const ErrorStats split_error = compare_radiance(split.B, reference.B);
   print_stats("dragon grid, near field per surfel", split.stats);
   std::printf("[ scan ] dragon grid, near field per surfel: %s\n", split_error.summary().c_str());
-  EXPECT_LT(split_error.mean, 0.01);
-  EXPECT_LT(split_error.p99, 0.05);
+  // This is the method the GPU path runs, so it is held to the GPU's goal (mean < 0.5 %,
+  // p99 < 3 %); measured: mean 0.19 %, p99 2.5 %, while the paper's grid-only form is off by
+  // 29 % mean, as the design notes predict for a kernel whose near field is finer than h.
+  EXPECT_LT(split_error.mean, 0.005);
+  EXPECT_LT(split_error.p99, 0.03);
 }
 
 }  // namespace
