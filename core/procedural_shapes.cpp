@@ -58,6 +58,18 @@ SurfelCloud make_torus(double R, double r, double spacing) {
   return cloud;
 }
 
+SurfelCloud make_line(int count, double spacing) {
+  check(spacing, "spacing");
+  SurfelCloud cloud;
+  for (int i = 0; i < count; ++i) {
+    cloud.positions.emplace_back(i * spacing, 0.0, 0.0);
+    cloud.normals.emplace_back(0.0, 0.0, 1.0);
+  }
+  cloud.radius = spacing;
+  cloud.validate();
+  return cloud;
+}
+
 SurfelCloud make_sphere(double r, double spacing) {
   check(r, "radius");
   check(spacing, "spacing");

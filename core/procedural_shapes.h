@@ -13,6 +13,9 @@ SurfelCloud make_slab(double disc_radius, double spacing);
 // apart so that the density is even, normals outward.
 SurfelCloud make_torus(double R, double r, double spacing);
 
+// `count` surfels along the x axis, `spacing` apart, normals +z, disc radius = spacing.
+SurfelCloud make_line(int count, double spacing);
+
 // A sphere of radius r in latitude rings about `spacing` apart, normals outward.
 SurfelCloud make_sphere(double r, double spacing);
 

@@ -70,14 +70,7 @@ TEST(VirtualGrid, PlanarAndLineClouds) {
   const VirtualGrid flat = VirtualGrid::build(slab, kMarble, level(4));
   EXPECT_EQ(flat.dims()[2], 2);
   expect_all_corners_kept(slab, flat);
-  SurfelCloud line;
-  for (int i = 0; i < 50; ++i) {
-    line.positions.emplace_back(0.3 * i, 0, 0);
-    line.normals.emplace_back(0, 0, 1);
-  }
-  line.radius = 0.2;
-  line.validate();
-  const LocalSurfels local = LocalSurfels::from(line, 1.0);
+  const LocalSurfels local = LocalSurfels::from(make_line(50, 0.3), 1.0);
   const VirtualGrid thin = VirtualGrid::build(local, kMarble, level(4));
   EXPECT_EQ(thin.dims()[1], 2);
   EXPECT_EQ(thin.dims()[2], 2);
