@@ -43,29 +43,46 @@ Eigen::Vector3d direction(const std::string& flag, const std::string& text) {
 }  // namespace
 
 std::string usage() {
-  return R"(sss_render: renders a surfel cloud as a translucent material (dipole diffusion, Jensen 2001)
-on the CPU, to PNG (tone-mapped sRGB) and optionally linear radiance (PFM) and JSON stats.
+  return R"(sss_render: renders a point cloud as a translucent material (dipole diffusion, Jensen 2001;
+real-time method of Oda et al. 2005) offscreen, to PNG (tone-mapped sRGB) and optionally
+linear radiance (PFM), per-point radiance (PLY) and JSON stats.
 
-usage: sss_render [options]        (no input: a procedural torus the project generates)
+usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
+       (no input: a procedural marble torus the project generates, in mm)
 
   --output F.png            tone-mapped sRGB image (default sss_render.png)
-  --linear F.pfm            linear outgoing radiance Lo (eq. 14), RGB float, background 0
-  --stats F.json            timings, counts and every setting used
+  --linear F.pfm            linear outgoing radiance Lo (eq. 14) per pixel, RGB float,
+                            no tone mapping, ambient or specular; background 0
+  --bake F.ply              each point's outgoing radiance towards the camera (float red,
+                            green, blue per vertex, input order, finite points only)
+  --stats F.json            time of each step, counts and every setting used
   --material NAME           measured preset (default marble): apple chicken1 chicken2 cream
                             ketchup marble potato skimmilk skin1 skin2 spectralon wholemilk
   --sigma-a R,G,B           custom absorption, 1/mm (with --sigma-s; replaces --material)
   --sigma-s R,G,B           custom reduced scattering sigma_s', 1/mm
   --eta V                   relative index of refraction (default 1.3)
-  --scale MM_PER_UNIT       millimetres per scene unit (default 1; the demo shape is in mm)
-  --light-dir X,Y,Z         from the object towards a directional light; repeatable
+  --scale MM_PER_UNIT       millimetres per scene unit (default 1; 1000 for scans in metres)
+  --light-dir X,Y,Z         from the object towards a directional light; repeatable, up to 4
                             (default one light at -0.3,0.5,0.8)
   --light-irradiance V      irradiance of each light (default 1)
   --view-dir X,Y,Z          from the object towards the camera (default 0,-1,0.6)
   --up X,Y,Z                camera up (default 0,0,1)
+  --ortho                   orthographic camera (default perspective, 30 degree view angle)
   --size WxH                image size in pixels (default 512x512)
-  --method reference|grid   reference: full per-point evaluation of eq. 16 (default);
-                            grid: virtual points with trilinear interpolation (CPU form)
+  --method grid|reference   grid (default): the real-time GPU method; reference: the CPU
+                            per-point evaluation of eq. 16 (progress on stderr), shown the
+                            same way
+  --backend osmesa|egl|x    OpenGL context: OSMesa or EGL surfaceless (no display needed;
+                            default egl) or an X window (needs DISPLAY)
+  --strategy NAME           GPU kernel: grid-near (default; far part on the virtual grid,
+                            near part per surfel), surfel (pyramid walk at every surfel),
+                            grid (pyramid walk at the virtual points only), paper (49
+                            Gaussian taps in a 40x40 window of a 512x512 map, grid only)
+  --grid-level K            virtual grid of 2^K points per axis (default 0: automatic)
+  --max-map N               largest illumination-map side, texels (default 4096)
+  --opening-angle V         pyramid walk accuracy, smaller is finer (default 0.5)
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
+  --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 1)
   --help                    this text
 )";
 }
@@ -121,16 +138,50 @@ Options parse(int argc, char** argv) {
       o.method = value();
       if (o.method != "reference" && o.method != "grid")
         throw std::invalid_argument("--method: '" + o.method + "' is not reference or grid");
+    } else if (flag == "--backend") {
+      o.backend = value();
+      if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "x")
+        throw std::invalid_argument("--backend: '" + o.backend + "' is not osmesa, egl or x");
+    } else if (flag == "--strategy") {
+      o.strategy = value();
+      if (o.strategy != "grid-near" && o.strategy != "surfel" && o.strategy != "grid" &&
+          o.strategy != "paper")
+        throw std::invalid_argument("--strategy: '" + o.strategy +
+                                    "' is not grid-near, surfel, grid or paper");
+    } else if (flag == "--bake") {
+      o.bake_ply = value();
+    } else if (flag == "--ortho") {
+      o.ortho = true;
+    } else if (flag == "--grid-level") {
+      const double k = number(flag, value());
+      if (k < 0 || k > 10 || k != std::floor(k))
+        throw std::invalid_argument("--grid-level: needs a whole number from 0 to 10");
+      o.grid_level = static_cast<int>(k);
+    } else if (flag == "--max-map") {
+      const double n = number(flag, value());
+      if (n < 16 || n > 16384 || n != std::floor(n))
+        throw std::invalid_argument("--max-map: needs a whole number from 16 to 16384");
+      o.max_map_size = static_cast<int>(n);
+    } else if (flag == "--opening-angle") {
+      o.opening_angle = number(flag, value());
+      if (o.opening_angle < 0.05 || o.opening_angle > 2.0)
+        throw std::invalid_argument("--opening-angle: needs a value from 0.05 to 2");
+    } else if (flag == "--exposure") {
+      o.exposure = number(flag, value());
+      if (o.exposure < 0) throw std::invalid_argument("--exposure: must be >= 0");
     } else if (flag == "--texel-per-zr") {
       o.texel_per_z_r = number(flag, value());
     } else if (!flag.empty() && flag[0] == '-') {
       throw std::invalid_argument(flag + ": unknown flag (see --help)");
+    } else if (o.input.empty()) {
+      o.input = flag;
     } else {
-      throw std::invalid_argument("'" + flag + "': reading clouds from files comes with the PCL "
-                                  "loader; this build renders the procedural demo shape only");
+      throw std::invalid_argument("'" + flag + "': only one input file can be given");
     }
   }
   if (o.light_dirs.empty()) o.light_dirs.emplace_back(-0.3, 0.5, 0.8);
+  if (o.light_dirs.size() > 4)
+    throw std::invalid_argument("--light-dir: at most 4 lights are supported");
   return o;
 }
 

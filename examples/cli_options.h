@@ -12,7 +12,7 @@ namespace sss::cli {
 struct Options {
   std::string input;  // empty: the procedural demo shape
   std::string output_png = "sss_render.png";
-  std::string linear_pfm, stats_json;
+  std::string linear_pfm, stats_json, bake_ply;
   std::string material = "marble";
   bool custom_material = false;
   Rgb sigma_a{}, sigma_s{};
@@ -22,8 +22,15 @@ struct Options {
   double light_irradiance = 1.0;
   Eigen::Vector3d view_dir{0.0, -1.0, 0.6};
   Eigen::Vector3d up{0.0, 0.0, 1.0};
+  bool ortho = false;
   int width = 512, height = 512;
-  std::string method = "reference";
+  std::string method = "grid";
+  std::string backend = "egl";
+  std::string strategy = "grid-near";
+  int grid_level = 0;
+  int max_map_size = 4096;
+  double opening_angle = 0.5;
+  double exposure = 1.0;
   double texel_per_z_r = 0.25;
   bool help = false;
 };

@@ -3,11 +3,11 @@
 
 #include <string>
 
-#include "linear_image.h"
+class vtkImageData;
 
 namespace sss::cli {
 
-// Tone-mapped sRGB (white = the image's largest value). Throws std::runtime_error on failure.
-void write_png(const LinearImage& image, const std::string& path);
+// Writes 8-bit RGB(A) image data. Throws std::runtime_error on failure.
+void write_png(vtkImageData* pixels, const std::string& path);
 
 }  // namespace sss::cli

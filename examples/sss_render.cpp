@@ -1,23 +1,45 @@
-// sss_render: a translucent surfel cloud rendered on the CPU (reference or grid method).
+// sss_render: a point cloud rendered offscreen as a translucent material, by the real-time GPU
+// method (vtkSubsurfacePass) or by the CPU reference, through the same VTK view.
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSubsurfacePass.h>
+#include <vtkSurfelMapper.h>
+#include <vtkTranslucentMaterial.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
 
-#include "camera_view.h"
+#include "baked_ply.h"
 #include "cli_options.h"
-#include "grid_renderer.h"
+#include "cloud_input.h"
+#include "fresnel.h"
+#include "linear_image.h"
 #include "png_output.h"
 #include "procedural_shapes.h"
 #include "reference_renderer.h"
+#include "render_window.h"
 #include "stopwatch.h"
 
 namespace {
 
 using sss::cli::Options;
 
-void print_progress(const char* what, std::size_t done, std::size_t total) {
-  std::fprintf(stderr, "\r%s: %3.0f %% (%zu of %zu points)", what,
+void print_progress(std::size_t done, std::size_t total) {
+  std::fprintf(stderr, "\rreference: %3.0f %% (%zu of %zu points)",
                total ? 100.0 * done / total : 100.0, done, total);
   if (done == total) std::fprintf(stderr, "\n");
 }
@@ -30,12 +52,17 @@ std::string json_vector(const Eigen::Vector3d& v) {
 
 std::string json_rgb(const sss::Rgb& v) { return json_vector(Eigen::Vector3d(v[0], v[1], v[2])); }
 
-void write_stats(const Options& o, const sss::Material& m, const sss::RadianceStats& s,
-                 double seconds_image, const std::string& path) {
+struct Timings {
+  double load = 0, reference = 0, first_frame = 0, camera_frame = 0;
+};
+
+void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
+                 vtkSubsurfacePass* pass, const Timings& t, const std::string& path) {
   const std::string partial = path + ".partial";
   {
     std::ofstream out(partial);
-    out << "{\n  \"method\": \"" << o.method << "\",\n"
+    out << "{\n  \"method\": \"" << o.method << "\",\n  \"backend\": \"" << o.backend
+        << "\",\n  \"strategy\": \"" << o.strategy << "\",\n"
         << "  \"input\": \"" << (o.input.empty() ? "procedural torus" : o.input) << "\",\n"
         << "  \"material\": {\"name\": \"" << m.name << "\", \"sigma_a_per_mm\": "
         << json_rgb(m.sigma_a) << ", \"sigma_s_prime_per_mm\": " << json_rgb(m.sigma_s_prime)
@@ -46,18 +73,32 @@ void write_stats(const Options& o, const sss::Material& m, const sss::RadianceSt
           << ", \"irradiance\": " << o.light_irradiance << "}";
     out << "],\n  \"camera\": {\"view_direction\": " << json_vector(o.view_dir.normalized())
         << ", \"up\": " << json_vector(o.up) << ", \"width\": " << o.width
-        << ", \"height\": " << o.height << ", \"projection\": \"orthographic\"},\n"
-        << "  \"counts\": {\"surfels\": " << s.surfels << ", \"lit_samples\": " << s.lit_samples
-        << ", \"virtual_points\": " << s.virtual_points << "},\n"
-        << "  \"illumination_map\": {\"texel_mm\": " << s.texel_mm << ", \"width\": "
-        << s.map_width << ", \"height\": " << s.map_height
-        << ", \"texel_per_z_r\": " << o.texel_per_z_r << "},\n"
-        << "  \"grid\": {\"level\": " << s.grid_level << ", \"spacing_mm\": " << s.grid_spacing_mm
+        << ", \"height\": " << o.height << ", \"projection\": \""
+        << (o.ortho ? "orthographic" : "perspective") << "\"},\n"
+        << "  \"counts\": {\"surfels\": " << cloud.size()
+        << ", \"lit_samples\": " << pass->GetLastLitSamples()
+        << ", \"virtual_points\": " << pass->GetLastVirtualPoints() << "},\n"
+        << "  \"settings\": {\"surfel_radius\": " << cloud.radius
+        << ", \"texel_per_z_r\": " << o.texel_per_z_r << ", \"max_map_size\": " << o.max_map_size
+        << ", \"map_width\": " << pass->GetLastMapWidth()
+        << ", \"map_height\": " << pass->GetLastMapHeight()
+        << ", \"texel_mm\": " << pass->GetLastTexelMillimetres()
+        << ", \"grid_level\": " << pass->GetLastGridLevel()
+        << ", \"grid_spacing_mm\": " << pass->GetLastGridSpacingMillimetres()
+        << ", \"requested_grid_level\": " << o.grid_level
+        << ", \"opening_angle\": " << o.opening_angle
+        << ", \"near_field_cells\": " << pass->GetNearFieldCells()
+        << ", \"exposure\": " << o.exposure << "},\n"
+        << "  \"steps_run\": {\"illumination\": " << pass->GetIlluminationRuns()
+        << ", \"virtual_points\": " << pass->GetVirtualPointRuns()
+        << ", \"surfels\": " << pass->GetSurfelRuns() << ", \"view\": " << pass->GetViewRuns()
         << "},\n"
-        << "  \"seconds\": {\"illumination\": " << s.seconds_illumination
-        << ", \"source_tree\": " << s.seconds_tree
-        << ", \"virtual_points\": " << s.seconds_virtual_points
-        << ", \"surfels\": " << s.seconds_surfels << ", \"image\": " << seconds_image << "}\n}\n";
+        << "  \"seconds\": {\"load\": " << t.load << ", \"reference\": " << t.reference
+        << ", \"illumination\": " << pass->GetLastIlluminationSeconds()
+        << ", \"virtual_points\": " << pass->GetLastVirtualPointSeconds()
+        << ", \"surfels\": " << pass->GetLastSurfelSeconds()
+        << ", \"first_frame\": " << t.first_frame
+        << ", \"camera_only_frame\": " << t.camera_frame << "}\n}\n";
     if (!out.flush()) throw std::runtime_error("cannot write " + partial);
   }
   if (std::rename(partial.c_str(), path.c_str()) != 0) {
@@ -66,41 +107,165 @@ void write_stats(const Options& o, const sss::Material& m, const sss::RadianceSt
   }
 }
 
+vtkSmartPointer<vtkPolyData> to_polydata(const sss::SurfelCloud& cloud) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.size()));
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(static_cast<vtkIdType>(cloud.size()));
+  normals->SetName("Normals");
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    points->SetPoint(static_cast<vtkIdType>(i), cloud.positions[i].data());
+    normals->SetTuple3(static_cast<vtkIdType>(i), cloud.normals[i].x(), cloud.normals[i].y(),
+                       cloud.normals[i].z());
+  }
+  auto polydata = vtkSmartPointer<vtkPolyData>::New();
+  polydata->SetPoints(points);
+  polydata->GetPointData()->SetNormals(normals);
+  return polydata;
+}
+
+int strategy_of(const std::string& name) {
+  if (name == "paper") return vtkSubsurfacePass::PAPER;
+  if (name == "grid") return vtkSubsurfacePass::GRID;
+  if (name == "surfel") return vtkSubsurfacePass::SURFEL;
+  return vtkSubsurfacePass::GRID_NEAR;
+}
+
 int run(const Options& o) {
+  sss::Stopwatch clock;
+  Timings timings;
   const sss::Material material =
       o.custom_material ? sss::Material::custom(o.sigma_a, o.sigma_s, o.eta, o.scale)
                         : sss::Material::preset(o.material, o.eta, o.scale);
-  std::vector<sss::DirectionalLight> lights;
-  for (const auto& d : o.light_dirs) lights.push_back({d, o.light_irradiance});
-  for (const auto& l : lights) l.validate();
-  // The demo: a torus in mm whose 7 mm tube glows where the light comes from behind.
-  const sss::SurfelCloud cloud = sss::make_torus(30.0, 7.0, 0.6);
-  std::fprintf(stderr, "%zu surfels, %s, %s method\n", cloud.size(), material.name.c_str(),
-               o.method.c_str());
-  sss::SurfelRadiance radiance;
+  sss::SurfelCloud cloud;
+  if (o.input.empty()) {
+    cloud = sss::make_torus(30.0, 7.0, 0.6);  // mm; its 7 mm tube glows when lit from behind
+    cloud.validate();
+  } else {
+    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(o.input);
+    std::fprintf(stderr, "%s\n", loaded.description.c_str());
+    cloud = std::move(loaded.cloud);
+  }
+  timings.load = clock.lap();
+  std::fprintf(stderr, "%zu surfels (radius %g), %s, %s method on %s\n", cloud.size(),
+               cloud.radius, material.name.c_str(), o.method.c_str(), o.backend.c_str());
+
+  vtkSmartPointer<vtkRenderWindow> window =
+      sss::cli::make_render_window(o.backend, o.width, o.height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  renderer->SetBackground(0, 0, 0);
+  renderer->AutomaticLightCreationOff();
+  for (const Eigen::Vector3d& d : o.light_dirs) {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetFocalPoint(0, 0, 0);
+    light->SetPosition(d.x(), d.y(), d.z());
+    light->SetIntensity(o.light_irradiance);
+    renderer->AddLight(light);
+  }
+  vtkSmartPointer<vtkPolyData> polydata = to_polydata(cloud);
+  vtkNew<vtkSurfelMapper> mapper;
+  mapper->SetInputData(polydata);
+  mapper->SetRadius(cloud.radius);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkTranslucentMaterial> translucent;
+  translucent->SetSigmaA(material.sigma_a[0], material.sigma_a[1], material.sigma_a[2]);
+  translucent->SetSigmaSPrime(material.sigma_s_prime[0], material.sigma_s_prime[1],
+                              material.sigma_s_prime[2]);
+  translucent->SetEta(material.eta[0]);
+  translucent->SetMillimetresPerUnit(material.mm_per_unit);
+  translucent->ApplyTo(actor);
+  renderer->AddActor(actor);
+
+  vtkNew<vtkSubsurfacePass> pass;
+  pass->SetKernelStrategy(strategy_of(o.strategy));
+  pass->SetGridLevel(o.grid_level);
+  pass->SetMaxMapSize(o.max_map_size);
+  pass->SetOpeningAngle(o.opening_angle);
+  pass->SetTexelPerZr(o.texel_per_z_r);
+  pass->SetExposure(o.exposure);
+  pass->SetCaptureLinearImage(!o.linear_pfm.empty());
+  pass->MeasureStepTimesOn();
+  renderer->SetPass(pass);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const Eigen::Vector3d c = cloud.bounds().center();
+  const Eigen::Vector3d v = o.view_dir.normalized();
+  camera->SetFocalPoint(c.x(), c.y(), c.z());
+  camera->SetPosition(c.x() + v.x(), c.y() + v.y(), c.z() + v.z());
+  camera->SetViewUp(o.up.x(), o.up.y(), o.up.z());
+  camera->SetParallelProjection(o.ortho);
+  renderer->ResetCamera();
+  camera->OrthogonalizeViewUp();
+
   if (o.method == "reference") {
     sss::ReferenceSettings settings;
     settings.illumination.texel_per_z_r = o.texel_per_z_r;
-    settings.progress = [](std::size_t d, std::size_t t) { print_progress("reference", d, t); };
-    radiance = sss::render_reference(cloud, material, lights, settings);
-  } else {
-    sss::GridSettings settings;
-    settings.illumination.texel_per_z_r = o.texel_per_z_r;
-    settings.progress = [](std::size_t d, std::size_t t) { print_progress("grid", d, t); };
-    radiance = sss::render_grid(cloud, material, lights, settings);
+    settings.progress = print_progress;
+    std::vector<sss::DirectionalLight> lights;
+    for (const auto& d : o.light_dirs) lights.push_back({d, o.light_irradiance});
+    const sss::SurfelRadiance reference = sss::render_reference(cloud, material, lights, settings);
+    vtkNew<vtkFloatArray> B;
+    B->SetNumberOfComponents(3);
+    B->SetNumberOfTuples(static_cast<vtkIdType>(cloud.size()));
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      B->SetTuple3(static_cast<vtkIdType>(i), reference.B[i][0], reference.B[i][1],
+                   reference.B[i][2]);
+    pass->SetPrecomputedRadiance(actor, B);
+    timings.reference = clock.lap();
   }
-  sss::Stopwatch clock;
-  sss::OrthoCamera camera;
-  camera.view_direction = o.view_dir;
-  camera.up = o.up;
-  camera.width = o.width;
-  camera.height = o.height;
-  const sss::LinearImage image = sss::render_view(cloud, material, radiance.B, camera);
-  const double seconds_image = clock.seconds();
-  sss::cli::write_png(image, o.output_png);
-  if (!o.linear_pfm.empty()) sss::write_pfm(image, o.linear_pfm);
-  if (!o.stats_json.empty()) write_stats(o, material, radiance.stats, seconds_image, o.stats_json);
-  std::fprintf(stderr, "wrote %s\n", o.output_png.c_str());
+  clock.lap();
+  window->Render();
+  timings.first_frame = clock.lap();
+  camera->Azimuth(0.0);  // a camera-only change: step 3 alone
+  camera->Modified();
+  window->Render();
+  timings.camera_frame = clock.lap();
+  if (pass->GetLastTranslucentActors() != 1)
+    throw std::runtime_error("the cloud could not be rendered translucent (see the errors above)");
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  sss::cli::write_png(grab->GetOutput(), o.output_png);
+  if (!o.linear_pfm.empty()) {
+    vtkFloatArray* linear = pass->GetLinearImage();
+    sss::LinearImage image(pass->GetLinearImageWidth(), pass->GetLinearImageHeight());
+    for (vtkIdType p = 0; p < linear->GetNumberOfTuples(); ++p) {
+      image.radiance[p] = {linear->GetValue(3 * p), linear->GetValue(3 * p + 1),
+                           linear->GetValue(3 * p + 2)};
+      image.covered[p] = linear->GetValue(3 * p) > 0 || linear->GetValue(3 * p + 1) > 0 ||
+                         linear->GetValue(3 * p + 2) > 0;
+    }
+    sss::write_pfm(image, o.linear_pfm);
+  }
+  if (!o.bake_ply.empty()) {
+    vtkNew<vtkFloatArray> B;
+    if (!pass->GetSurfelRadiance(actor, B)) throw std::runtime_error("no radiance to bake");
+    double eye[3];
+    camera->GetPosition(eye);
+    const Eigen::Vector3d eye_position(eye[0], eye[1], eye[2]);
+    std::vector<sss::Rgb> Lo(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      const Eigen::Vector3d wo = o.ortho ? v : (eye_position - cloud.positions[i]).normalized();
+      const double cos_o = std::fabs(cloud.normals[i].dot(wo));
+      for (int ch = 0; ch < 3; ++ch)
+        Lo[i][ch] = sss::fresnel_transmittance(material.eta[ch], cos_o) *
+                    B->GetValue(static_cast<vtkIdType>(3 * i + ch));
+    }
+    sss::cli::write_baked_ply(cloud.positions, Lo, o.bake_ply);
+  }
+  if (!o.stats_json.empty()) write_stats(o, material, cloud, pass, timings, o.stats_json);
+  std::fprintf(stderr, "wrote %s (first frame %.3f s, camera-only frame %.3f s)\n",
+               o.output_png.c_str(), timings.first_frame, timings.camera_frame);
   return 0;
 }
 
@@ -113,6 +278,7 @@ int main(int argc, char** argv) {
       std::cout << sss::cli::usage();
       return 0;
     }
+    sss::cli::prepare_backend(options.backend, argc, argv);
     return run(options);
   } catch (const std::exception& e) {
     std::cerr << "sss_render: " << e.what() << "\n";

@@ -1,0 +1,38 @@
+#include "baked_ply.h"
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace sss::cli {
+
+void write_baked_ply(const std::vector<Eigen::Vector3d>& positions, const std::vector<Rgb>& Lo,
+                     const std::string& path) {
+  if (positions.size() != Lo.size())
+    throw std::invalid_argument("[write_baked_ply] positions and radiance differ in count");
+  const std::string partial = path + ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\n"
+        << "comment outgoing radiance Lo (eq. 14) towards the camera, linear\n"
+        << "element vertex " << positions.size() << "\n"
+        << "property double x\nproperty double y\nproperty double z\n"
+        << "property float red\nproperty float green\nproperty float blue\nend_header\n";
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      out.write(reinterpret_cast<const char*>(positions[i].data()), 3 * sizeof(double));
+      const float rgb[3] = {static_cast<float>(Lo[i][0]), static_cast<float>(Lo[i][1]),
+                            static_cast<float>(Lo[i][2])};
+      out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
+    }
+    if (!out.flush()) {
+      std::remove(partial.c_str());
+      throw std::runtime_error("cannot write " + partial);
+    }
+  }
+  if (std::rename(partial.c_str(), path.c_str()) != 0) {
+    std::remove(partial.c_str());
+    throw std::runtime_error("cannot write " + path);
+  }
+}
+
+}  // namespace sss::cli

@@ -1,0 +1,16 @@
+// The --bake output: a binary PLY with each point's position and outgoing radiance.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "surfel_cloud.h"
+
+namespace sss::cli {
+
+// One vertex per point (double x, y, z; float red, green, blue). Written whole or not at all;
+// throws std::runtime_error on failure.
+void write_baked_ply(const std::vector<Eigen::Vector3d>& positions, const std::vector<Rgb>& Lo,
+                     const std::string& path);
+
+}  // namespace sss::cli

@@ -1,0 +1,21 @@
+// The OpenGL context sss_render draws in: OSMesa, EGL surfaceless or an X window.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkRenderWindow;
+
+namespace sss::cli {
+
+// For "osmesa", call before anything else in main: the process may re-execute itself with
+// libOSMesa loaded first (see vtkOSMesaRenderWindow). Throws std::runtime_error.
+void prepare_backend(const std::string& backend, int argc, char** argv);
+
+// An offscreen window of the given size whose context is valid. Throws std::runtime_error
+// naming the backend and why it failed (no DISPLAY for x, no EGL device, ...).
+vtkSmartPointer<vtkRenderWindow> make_render_window(const std::string& backend, int width,
+                                                   int height);
+
+}  // namespace sss::cli

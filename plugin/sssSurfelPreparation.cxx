@@ -1,0 +1,79 @@
+#include "sssSurfelPreparation.h"
+
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace sss
+{
+
+PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, vtkUnsignedCharArray* colours,
+  const std::array<std::uint8_t, 4>& fallback)
+{
+  PreparedSurfels prepared;
+  if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
+  {
+    prepared.error = "the input has no points";
+    return prepared;
+  }
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    prepared.error = "the input has no point normals (3-component vtkPointData normals); "
+                     "compute them first, e.g. with the PCL glue or vtkPCANormalEstimation";
+    return prepared;
+  }
+  const vtkIdType n = input->GetNumberOfPoints();
+  SurfelCloud& cloud = prepared.cloud;
+  cloud.positions.resize(n);
+  cloud.normals.resize(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3], q[3];
+    input->GetPoints()->GetPoint(i, p);
+    normals->GetTuple(i, q);
+    cloud.positions[i] = Eigen::Vector3d(p[0], p[1], p[2]);
+    cloud.normals[i] = Eigen::Vector3d(q[0], q[1], q[2]);
+  }
+  cloud.radius = 1.0;  // placeholder until the spacing of the kept points is known
+  prepared.report = cloud.validate();
+  if (cloud.empty())
+  {
+    prepared.error = "no point has a finite position and normal (" + prepared.report.summary() + ")";
+    return prepared;
+  }
+  if (radius > 0.0)
+  {
+    cloud.radius = radius;
+  }
+  else
+  {
+    const double spacing = cloud.mean_spacing();
+    const Bounds b = cloud.bounds();
+    const double extent = b.extent().norm();
+    cloud.radius = spacing > 0.0 ? spacing : (extent > 0.0 ? 0.01 * extent : 1.0);
+  }
+  const Bounds b = cloud.bounds();
+  const Eigen::Vector3d c = b.center();
+  prepared.centre = { { c.x(), c.y(), c.z() } };
+  prepared.rgba.resize(4 * cloud.size());
+  const bool perPoint = colours && colours->GetNumberOfComponents() == 4 &&
+    colours->GetNumberOfTuples() == n;
+  for (std::size_t k = 0; k < cloud.size(); ++k)
+  {
+    for (int c4 = 0; c4 < 4; ++c4)
+    {
+      prepared.rgba[4 * k + c4] = perPoint
+        ? colours->GetValue(static_cast<vtkIdType>(4 * cloud.input_index[k] + c4))
+        : fallback[c4];
+    }
+  }
+  return prepared;
+}
+
+}

@@ -1,0 +1,860 @@
+#include "sssTranslucentActorState.h"
+
+#include "sssPaperTaps.h"
+#include "sss_dipole.h"
+#include "sss_gather_paper.h"
+#include "sss_gather_tree.h"
+#include "sss_illumination_fs.h"
+#include "sss_kernel_window.h"
+#include "sss_pyramid_reduce_fs.h"
+#include "sss_surfel_gs.h"
+#include "sss_surfel_resolve_fs.h"
+#include "sss_surfel_resolve_vs.h"
+#include "sss_surfel_vs.h"
+#include "sss_virtual_points_fs.h"
+#include "sss_virtual_points_vs.h"
+
+#include "disc_raster.h"
+#include "local_surfels.h"
+#include "stopwatch.h"
+#include "virtual_grid.h"
+
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <memory>
+#include <numeric>
+#include <sstream>
+
+namespace sss
+{
+
+namespace
+{
+// Sources beyond this distance carry less than this fraction of the kernel's integral.
+constexpr double kSupportFraction = 1e-7;
+constexpr int kListWidth = 2048;
+
+struct LevelRect
+{
+  int x, y, width, height;
+};
+
+vtkSmartPointer<vtkTextureObject> FloatTexture2D(vtkOpenGLRenderWindow* window, int w, int h)
+{
+  auto tex = vtkSmartPointer<vtkTextureObject>::New();
+  tex->SetContext(window);
+  tex->SetInternalFormat(GL_RGBA32F);
+  tex->SetFormat(GL_RGBA);
+  tex->SetDataType(GL_FLOAT);
+  tex->SetMinificationFilter(vtkTextureObject::Nearest);
+  tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+  tex->SetWrapS(vtkTextureObject::ClampToEdge);
+  tex->SetWrapT(vtkTextureObject::ClampToEdge);
+  tex->Allocate2D(w, h, 4, VTK_FLOAT);
+  return tex;
+}
+
+std::string WithPieces(std::string source, const std::string& gather)
+{
+  vtkShaderProgram::Substitute(source, "//SSS::Gather::Dec", gather, true);
+  vtkShaderProgram::Substitute(source, "//SSS::Dipole::Dec", sss_dipole, true);
+  vtkShaderProgram::Substitute(source, "SSS_MAX_LIGHTS", std::to_string(kMaxLights), true);
+  vtkShaderProgram::Substitute(source, "SSS_MAX_LEVELS", std::to_string(kMaxLevels), true);
+  return source;
+}
+
+std::string WithoutRadianceHooks(std::string source)
+{
+  vtkShaderProgram::Substitute(source, "//SSS::Radiance::Dec", "", true);
+  vtkShaderProgram::Substitute(source, "//SSS::Radiance::Impl", "", true);
+  return source;
+}
+
+void Finish(bool finish)
+{
+  if (finish)
+  {
+    glFinish();
+  }
+}
+
+void TextureBarrier()
+{
+  if (GLEW_VERSION_4_5 || GLEW_ARB_texture_barrier)
+  {
+    glTextureBarrier();
+  }
+  else
+  {
+    glFinish();
+  }
+}
+
+// A VAO bound to one program's attribute locations, rebuilt when the program changes.
+struct ProgramVAO
+{
+  vtkNew<vtkOpenGLVertexArrayObject> vao;
+  vtkShaderProgram* program = nullptr;
+  bool needs(vtkShaderProgram* p) const { return p != program; }
+};
+}
+
+struct TranslucentActorState::Gpu
+{
+  LocalSurfels local;
+  std::unique_ptr<Dipole> dipole;
+  double support_radius = 0;
+
+  vtkNew<vtkOpenGLBufferObject> points, normals, colours;
+  ProgramVAO illumination_vao, resolve_vao, grid_vao;
+
+  std::vector<OrthoView> maps;
+  std::vector<std::vector<LevelRect>> levels;
+  int atlas_width = 0, atlas_height = 0;
+  vtkSmartPointer<vtkTextureObject> atlas_point, atlas_power, atlas_normal, atlas_depth;
+  vtkNew<vtkOpenGLFramebufferObject> map_fbo, grid_fbo, list_fbo;
+  std::unique_ptr<vtkOpenGLQuadHelper> reduce;
+
+  std::unique_ptr<VirtualGrid> grid;
+  vtkNew<vtkOpenGLBufferObject> grid_index;
+  std::vector<std::pair<int, int>> slice_range;  // first, count per k
+  vtkSmartPointer<vtkTextureObject> grid_radiance;
+
+  vtkSmartPointer<vtkTextureObject> list;
+  int list_height = 1;
+
+  void release(vtkWindow* window)
+  {
+    points->ReleaseGraphicsResources();
+    normals->ReleaseGraphicsResources();
+    colours->ReleaseGraphicsResources();
+    grid_index->ReleaseGraphicsResources();
+    for (ProgramVAO* v : { &illumination_vao, &resolve_vao, &grid_vao })
+    {
+      v->vao->ReleaseGraphicsResources();
+      v->program = nullptr;
+    }
+    for (auto* t : { &atlas_point, &atlas_power, &atlas_normal, &atlas_depth, &grid_radiance,
+           &list })
+    {
+      if (*t)
+      {
+        (*t)->ReleaseGraphicsResources(window);
+        *t = nullptr;
+      }
+    }
+    map_fbo->ReleaseGraphicsResources(window);
+    grid_fbo->ReleaseGraphicsResources(window);
+    list_fbo->ReleaseGraphicsResources(window);
+    if (reduce)
+    {
+      reduce->ReleaseGraphicsResources(window);
+      reduce.reset();
+    }
+    atlas_width = atlas_height = 0;
+  }
+};
+
+TranslucentActorState::TranslucentActorState()
+  : gpu_(new Gpu)
+{
+}
+
+TranslucentActorState::~TranslucentActorState()
+{
+  delete gpu_;
+}
+
+vtkTextureObject* TranslucentActorState::surfel_radiance() const
+{
+  return gpu_->list;
+}
+
+void TranslucentActorState::release(vtkWindow* window)
+{
+  gpu_->release(window);
+  valid_ = false;
+  geometry_time_ = 0;
+}
+
+bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
+  vtkMTimeType surfels_time, const Material& material, bool albedo_from_colour,
+  const std::vector<GpuLight>& lights, const GpuSettings& settings, bool finish,
+  StepReport& report, std::string& error)
+{
+  std::vector<double> key;
+  for (int c = 0; c < 3; ++c)
+  {
+    key.insert(key.end(), { material.sigma_a[c], material.sigma_s_prime[c], material.eta[c] });
+  }
+  key.push_back(material.mm_per_unit);
+  const bool material_changed = key != material_key_;
+  const bool geometry_changed = !valid_ || surfels_time != geometry_time_ || material_changed ||
+    !(settings == geometry_settings_);
+  const bool light_changed = geometry_changed || !(lights == lights_) ||
+    !(settings == settings_) || albedo_from_colour != albedo_from_colour_;
+  report.surfel_count = surfels.cloud.size();
+  if (!light_changed)
+  {
+    return true;
+  }
+  material_ = material;
+  valid_ = false;
+  Stopwatch clock;
+  if (geometry_changed)
+  {
+    if (!upload_geometry(window, surfels, settings, error))
+    {
+      return false;
+    }
+    material_key_ = key;
+    geometry_time_ = surfels_time;
+    geometry_settings_ = settings;
+  }
+  if (!run_illumination(window, lights, settings, albedo_from_colour, report, error))
+  {
+    return false;
+  }
+  Finish(finish);
+  report.illumination = true;
+  report.seconds_illumination = clock.lap();
+  if (gpu_->grid)
+  {
+    if (!run_virtual_points(window, settings, error))
+    {
+      return false;
+    }
+    Finish(finish);
+    report.virtual_points = true;
+    report.seconds_virtual_points = clock.lap();
+    report.virtual_point_count = gpu_->grid->points().size();
+    report.grid_level = gpu_->grid->level();
+    report.grid_spacing_mm = gpu_->grid->spacing();
+  }
+  if (!run_surfels(window, settings, error))
+  {
+    return false;
+  }
+  Finish(finish);
+  report.surfels = true;
+  report.seconds_surfels = clock.lap();
+  lights_ = lights;
+  settings_ = settings;
+  albedo_from_colour_ = albedo_from_colour;
+  valid_ = true;
+  return true;
+}
+
+bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
+  const PreparedSurfels& surfels, const GpuSettings& settings, std::string& error)
+{
+  Gpu& g = *gpu_;
+  g.local = LocalSurfels::from(surfels.cloud, material_.mm_per_unit);
+  g.dipole = std::make_unique<Dipole>(material_);
+  g.support_radius = g.dipole->max_support_radius(kSupportFraction);
+  const std::size_t n = g.local.size();
+  std::vector<float> points(3 * n), normals(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      points[3 * i + c] = static_cast<float>(g.local.positions[i][c]);
+      normals[3 * i + c] = static_cast<float>(g.local.normals[i][c]);
+    }
+  }
+  g.points->Upload(points, vtkOpenGLBufferObject::ArrayBuffer);
+  g.normals->Upload(normals, vtkOpenGLBufferObject::ArrayBuffer);
+  g.colours->Upload(surfels.rgba, vtkOpenGLBufferObject::ArrayBuffer);
+  g.illumination_vao.program = nullptr;
+  g.resolve_vao.program = nullptr;
+
+  list_width_ = kListWidth;
+  g.list_height = static_cast<int>((n + kListWidth - 1) / kListWidth);
+  g.list = FloatTexture2D(window, list_width_, std::max(1, g.list_height));
+
+  g.grid.reset();
+  g.grid_radiance = nullptr;
+  if (settings.strategy != KernelStrategy::Surfel)
+  {
+    VirtualGridSettings grid_settings;
+    grid_settings.level = settings.grid_level;
+    try
+    {
+      g.grid = std::make_unique<VirtualGrid>(VirtualGrid::build(g.local, *g.dipole, grid_settings));
+    }
+    catch (const std::exception& e)
+    {
+      error = e.what();
+      return false;
+    }
+    const VirtualGrid& grid = *g.grid;
+    std::vector<std::size_t> order(grid.points().size());
+    std::iota(order.begin(), order.end(), 0);
+    auto index_of = [&](std::size_t i) {
+      return ((grid.points()[i] - grid.origin()) / grid.spacing()).array().round().eval();
+    };
+    std::vector<Eigen::Array3d> ijk(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+    {
+      ijk[i] = index_of(i);
+    }
+    std::stable_sort(order.begin(), order.end(),
+      [&](std::size_t a, std::size_t b) { return ijk[a].z() < ijk[b].z(); });
+    std::vector<float> indices;
+    indices.reserve(3 * order.size());
+    g.slice_range.assign(grid.dims()[2], { 0, 0 });
+    for (std::size_t r = 0; r < order.size(); ++r)
+    {
+      const Eigen::Array3d& c = ijk[order[r]];
+      const int k = static_cast<int>(c.z());
+      if (g.slice_range[k].second == 0)
+      {
+        g.slice_range[k].first = static_cast<int>(r);
+      }
+      ++g.slice_range[k].second;
+      indices.insert(indices.end(),
+        { static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()) });
+    }
+    g.grid_index->Upload(indices, vtkOpenGLBufferObject::ArrayBuffer);
+    g.grid_vao.program = nullptr;
+    auto tex = vtkSmartPointer<vtkTextureObject>::New();
+    tex->SetContext(window);
+    tex->SetInternalFormat(GL_RGBA32F);
+    tex->SetFormat(GL_RGBA);
+    tex->SetDataType(GL_FLOAT);
+    tex->SetMinificationFilter(vtkTextureObject::Linear);
+    tex->SetMagnificationFilter(vtkTextureObject::Linear);
+    tex->SetWrapS(vtkTextureObject::ClampToEdge);
+    tex->SetWrapT(vtkTextureObject::ClampToEdge);
+    tex->SetWrapR(vtkTextureObject::ClampToEdge);
+    if (!tex->Allocate3D(grid.dims()[0], grid.dims()[1], grid.dims()[2], 4, VTK_FLOAT))
+    {
+      error = "cannot allocate the virtual points' 3-D texture";
+      return false;
+    }
+    g.grid_radiance = tex;
+  }
+  return true;
+}
+
+std::string TranslucentActorState::gather_source(const GpuSettings& settings) const
+{
+  return std::string(sss_kernel_window) + "\n" + sss_dipole + "\n" +
+    (settings.strategy == KernelStrategy::Paper ? sss_gather_paper : sss_gather_tree);
+}
+
+void TranslucentActorState::set_gather_uniforms(vtkShaderProgram* program,
+  const GpuSettings& settings, int part, double r0, double r1)
+{
+  Gpu& g = *gpu_;
+  float zr[3], zv[3], str[3], factor[3], eta[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const DipoleChannel& ch = g.dipole->channel[c];
+    zr[c] = static_cast<float>(ch.z_r);
+    zv[c] = static_cast<float>(ch.z_v);
+    str[c] = static_cast<float>(ch.s_tr);
+    factor[c] = static_cast<float>(ch.alpha_prime / (4.0 * M_PI));
+    eta[c] = static_cast<float>(material_.eta[c]);
+  }
+  program->SetUniform3f("zR", zr);
+  program->SetUniform3f("zV", zv);
+  program->SetUniform3f("sTr", str);
+  program->SetUniform3f("rdFactor", factor);
+  program->SetUniform3f("eta", eta);
+  program->SetUniformi("windowPart", part);
+  program->SetUniformf("windowR0", static_cast<float>(r0));
+  program->SetUniformf("windowR1", static_cast<float>(r1));
+
+  const int lights = static_cast<int>(g.maps.size());
+  std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f), texel(kMaxLights, 0.0f),
+    axis_u(3 * kMaxLights, 0.0f), axis_v(3 * kMaxLights, 0.0f), corner(2 * kMaxLights, 0.0f);
+  std::vector<int> level_count(kMaxLights, 0);
+  for (int l = 0; l < lights; ++l)
+  {
+    level_count[l] = static_cast<int>(g.levels[l].size());
+    for (std::size_t L = 0; L < g.levels[l].size(); ++L)
+    {
+      const LevelRect& r = g.levels[l][L];
+      float* out = &rects[4 * (l * kMaxLevels + L)];
+      out[0] = float(r.x);
+      out[1] = float(r.y);
+      out[2] = float(r.width);
+      out[3] = float(r.height);
+    }
+    const OrthoView& map = g.maps[l];
+    texel[l] = static_cast<float>(map.pixel);
+    for (int c = 0; c < 3; ++c)
+    {
+      axis_u[3 * l + c] = static_cast<float>(map.u[c]);
+      axis_v[3 * l + c] = static_cast<float>(map.v[c]);
+    }
+    corner[2 * l] = static_cast<float>(map.corner.x());
+    corner[2 * l + 1] = static_cast<float>(map.corner.y());
+  }
+  program->SetUniformi("lightCount", lights);
+  program->SetUniform1iv("levelCount", kMaxLights, level_count.data());
+  program->SetUniform4fv("levelRect", kMaxLights * kMaxLevels, rects.data());
+  program->SetUniform1fv("texelSize", kMaxLights, texel.data());
+  program->SetUniform3fv("mapAxisU", kMaxLights, axis_u.data());
+  program->SetUniform3fv("mapAxisV", kMaxLights, axis_v.data());
+  program->SetUniform2fv("mapCorner", kMaxLights, corner.data());
+  program->SetUniformf("openingAngle", static_cast<float>(settings.opening_angle));
+  program->SetUniformf("supportRadius", static_cast<float>(g.support_radius));
+  if (settings.strategy == KernelStrategy::Paper)
+  {
+    const auto taps = paper_taps();
+    program->SetUniform3fv("paperTaps", kPaperTapCount, &taps[0][0]);
+  }
+  program->SetUniformi("mapPoint", g.atlas_point->GetTextureUnit());
+  program->SetUniformi("mapPower", g.atlas_power->GetTextureUnit());
+  program->SetUniformi("mapNormal", g.atlas_normal->GetTextureUnit());
+}
+
+bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
+  const std::vector<GpuLight>& lights, const GpuSettings& settings, bool albedo_from_colour,
+  StepReport& report, std::string& error)
+{
+  Gpu& g = *gpu_;
+  if (lights.size() > static_cast<std::size_t>(kMaxLights))
+  {
+    error = "at most " + std::to_string(kMaxLights) + " directional lights are supported";
+    return false;
+  }
+  const bool paper = settings.strategy == KernelStrategy::Paper;
+  const double texel = paper ? 1e-9 : settings.texel_per_z_r * g.dipole->min_z_r();
+  const int max_size = paper ? kPaperMapSize : settings.max_map_size;
+  g.maps.clear();
+  g.levels.clear();
+  int atlas_w = 1, atlas_h = 0;
+  for (const GpuLight& light : lights)
+  {
+    const OrthoView map = OrthoView::fit_pixel(g.local.positions, g.local.radius,
+      light.towards_light, Eigen::Vector3d::UnitZ(), texel, max_size);
+    std::vector<LevelRect> rects{ { 0, atlas_h, map.width, map.height } };
+    int w = map.width, h = map.height, y = atlas_h;
+    while (w > 1 || h > 1)
+    {
+      w = (w + 1) / 2;
+      h = (h + 1) / 2;
+      rects.push_back({ map.width, y, w, h });
+      y += h;
+    }
+    if (rects.size() > static_cast<std::size_t>(kMaxLevels))
+    {
+      error = "illumination map too large for the pyramid";
+      return false;
+    }
+    atlas_w = std::max(atlas_w, map.width + (map.width > 1 ? rects[1].width : 0));
+    atlas_h = std::max(atlas_h + map.height, y);  // the coarser levels may stack higher
+    g.maps.push_back(map);
+    g.levels.push_back(rects);
+  }
+  atlas_h = std::max(atlas_h, 1);
+  int max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  if (atlas_w > max_texture || atlas_h > max_texture)
+  {
+    std::ostringstream msg;
+    msg << "the illumination maps need a " << atlas_w << " x " << atlas_h
+        << " texture, over this GL's limit of " << max_texture << "; lower MaxMapSize";
+    error = msg.str();
+    return false;
+  }
+  if (atlas_w != g.atlas_width || atlas_h != g.atlas_height || !g.atlas_point)
+  {
+    g.atlas_point = FloatTexture2D(window, atlas_w, atlas_h);
+    g.atlas_power = FloatTexture2D(window, atlas_w, atlas_h);
+    g.atlas_normal = FloatTexture2D(window, atlas_w, atlas_h);
+    g.atlas_depth = vtkSmartPointer<vtkTextureObject>::New();
+    g.atlas_depth->SetContext(window);
+    g.atlas_depth->AllocateDepth(atlas_w, atlas_h, vtkTextureObject::Float32);
+    g.atlas_width = atlas_w;
+    g.atlas_height = atlas_h;
+  }
+  report.map_width = g.maps.empty() ? 0 : g.maps[0].width;
+  report.map_height = g.maps.empty() ? 0 : g.maps[0].height;
+  report.texel_mm = g.maps.empty() ? 0.0 : g.maps[0].pixel;
+
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable depth_test(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->PushFramebufferBindings();
+  g.map_fbo->SetContext(window);
+  g.map_fbo->Bind();
+  g.map_fbo->AddColorAttachment(0, g.atlas_point);
+  g.map_fbo->AddColorAttachment(1, g.atlas_power);
+  g.map_fbo->AddColorAttachment(2, g.atlas_normal);
+  g.map_fbo->AddDepthAttachment(g.atlas_depth);
+  g.map_fbo->ActivateDrawBuffers(3);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglViewport(0, 0, atlas_w, atlas_h);
+  state->vtkglClearColor(0, 0, 0, 0);
+  state->vtkglClearDepth(1.0);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  const std::string vs = WithoutRadianceHooks(sss_surfel_vs);
+  const std::string fs = WithPieces(sss_illumination_fs, "");
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), sss_surfel_gs);
+  if (!program)
+  {
+    error = "the illumination-map shaders did not compile";
+    state->PopFramebufferBindings();
+    return false;
+  }
+  ProgramVAO& pv = g.illumination_vao;
+  pv.vao->Bind();
+  if (pv.needs(program))
+  {
+    pv.vao->ReleaseGraphicsResources();
+    pv.vao->Bind();
+    pv.vao->AddAttributeArray(program, g.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+    pv.vao->AddAttributeArray(program, g.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+    pv.vao->AddAttributeArray(program, g.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+    pv.program = program;
+  }
+  set_gather_uniforms(program, settings, 0, 0, 0);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  const double reach = 0.5 * g.local.bounds.extent().norm() + g.local.radius + 1.0;
+  for (std::size_t l = 0; l < lights.size(); ++l)
+  {
+    const OrthoView& map = g.maps[l];
+    Eigen::Matrix3d rows;
+    rows.row(0) = map.u.transpose();
+    rows.row(1) = map.v.transpose();
+    rows.row(2) = map.w.transpose();
+    Eigen::Matrix4f model_to_view = Eigen::Matrix4f::Identity();
+    model_to_view.block<3, 3>(0, 0) = rows.cast<float>();
+    const Eigen::Matrix3f normal_to_view = rows.cast<float>();
+    const Eigen::Matrix3f view_to_local = rows.transpose().cast<float>();
+    Eigen::Matrix4d ortho = Eigen::Matrix4d::Zero();
+    ortho(0, 0) = 2.0 / (map.width * map.pixel);
+    ortho(0, 3) = -2.0 * map.corner.x() / (map.width * map.pixel) - 1.0;
+    ortho(1, 1) = 2.0 / (map.height * map.pixel);
+    ortho(1, 3) = -2.0 * map.corner.y() / (map.height * map.pixel) - 1.0;
+    ortho(2, 2) = -1.0 / reach;
+    ortho(3, 3) = 1.0;
+    const Eigen::Matrix4f view_to_clip = ortho.cast<float>();
+    program->SetUniformMatrix4x4("modelToView", model_to_view.data());
+    program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normal_to_view.data()));
+    program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view_to_clip.data()));
+    program->SetUniformMatrix3x3("viewToLocal", const_cast<float*>(view_to_local.data()));
+    program->SetUniformf("radiusVC", static_cast<float>(g.local.radius));
+    program->SetUniformi("orthographic", 1);
+    const float towards[3] = { static_cast<float>(lights[l].towards_light.x()),
+      static_cast<float>(lights[l].towards_light.y()),
+      static_cast<float>(lights[l].towards_light.z()) };
+    program->SetUniform3f("towardsLight", towards);
+    float power[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      power[c] = static_cast<float>(lights[l].irradiance[c] * map.pixel * map.pixel);
+    }
+    program->SetUniform3f("irradianceArea", power);
+    program->SetUniformi("albedoFromColour", albedo_from_colour ? 1 : 0);
+    const LevelRect& r = g.levels[l][0];
+    state->vtkglViewport(r.x, r.y, r.width, r.height);
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(g.local.size()));
+  }
+  pv.vao->Release();
+
+  // The pyramid: each level from the one below, in the same atlas (disjoint texels, with a
+  // texture barrier between levels).
+  state->vtkglDisable(GL_DEPTH_TEST);
+  if (!g.reduce)
+  {
+    g.reduce = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr, sss_pyramid_reduce_fs, "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(g.reduce->Program);
+  }
+  vtkShaderProgram* reduce = g.reduce->Program;
+  if (!reduce)
+  {
+    error = "the pyramid shader did not compile";
+    state->PopFramebufferBindings();
+    return false;
+  }
+  g.atlas_point->Activate();
+  g.atlas_power->Activate();
+  g.atlas_normal->Activate();
+  reduce->SetUniformi("mapPoint", g.atlas_point->GetTextureUnit());
+  reduce->SetUniformi("mapPower", g.atlas_power->GetTextureUnit());
+  reduce->SetUniformi("mapNormal", g.atlas_normal->GetTextureUnit());
+  for (std::size_t l = 0; l < lights.size(); ++l)
+  {
+    const float towards[3] = { static_cast<float>(lights[l].towards_light.x()),
+      static_cast<float>(lights[l].towards_light.y()),
+      static_cast<float>(lights[l].towards_light.z()) };
+    reduce->SetUniform3f("towardsLight", towards);
+    for (std::size_t L = 1; L < g.levels[l].size(); ++L)
+    {
+      const LevelRect& src = g.levels[l][L - 1];
+      const LevelRect& dst = g.levels[l][L];
+      const int source_origin[2] = { src.x, src.y }, source_size[2] = { src.width, src.height },
+                target_size[2] = { dst.width, dst.height };
+      reduce->SetUniform2i("sourceOrigin", source_origin);
+      reduce->SetUniform2i("sourceSize", source_size);
+      reduce->SetUniform2i("targetSize", target_size);
+      TextureBarrier();
+      state->vtkglViewport(dst.x, dst.y, dst.width, dst.height);
+      g.reduce->Render();
+    }
+  }
+  TextureBarrier();
+  g.atlas_point->Deactivate();
+  g.atlas_power->Deactivate();
+  g.atlas_normal->Deactivate();
+
+  // Lit texels: the count the top of each pyramid holds.
+  report.lit_samples = 0;
+  g.map_fbo->ActivateReadBuffer(1);
+  for (std::size_t l = 0; l < lights.size(); ++l)
+  {
+    const LevelRect& top = g.levels[l].back();
+    float texel_value[4] = { 0, 0, 0, 0 };
+    glReadPixels(top.x, top.y, 1, 1, GL_RGBA, GL_FLOAT, texel_value);
+    report.lit_samples += static_cast<std::size_t>(texel_value[3] + 0.5f);
+  }
+  g.map_fbo->RemoveColorAttachments(3);
+  g.map_fbo->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+  return true;
+}
+
+bool TranslucentActorState::run_virtual_points(
+  vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error)
+{
+  Gpu& g = *gpu_;
+  const VirtualGrid& grid = *g.grid;
+  const std::string fs = WithPieces(sss_virtual_points_fs, gather_source(settings));
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(sss_virtual_points_vs, fs.c_str(), "");
+  if (!program)
+  {
+    error = "the virtual-point shaders did not compile";
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable depth_test(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable point_size(state, GL_PROGRAM_POINT_SIZE);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+
+  ProgramVAO& pv = g.grid_vao;
+  pv.vao->Bind();
+  if (pv.needs(program))
+  {
+    pv.vao->ReleaseGraphicsResources();
+    pv.vao->Bind();
+    pv.vao->AddAttributeArray(program, g.grid_index, "gridIndex", 0, 12, VTK_FLOAT, 3, false);
+    pv.program = program;
+  }
+  g.atlas_point->Activate();
+  g.atlas_power->Activate();
+  g.atlas_normal->Activate();
+  const bool split = settings.strategy == KernelStrategy::GridNear;
+  const double r0 = settings.near_field_cells * grid.spacing();
+  set_gather_uniforms(program, settings, split ? 2 : 0, r0, 2.0 * r0);
+  const float origin[3] = { static_cast<float>(grid.origin().x()),
+    static_cast<float>(grid.origin().y()), static_cast<float>(grid.origin().z()) };
+  program->SetUniform3f("gridOrigin", origin);
+  program->SetUniformf("gridSpacing", static_cast<float>(grid.spacing()));
+  const float slice[2] = { float(grid.dims()[0]), float(grid.dims()[1]) };
+  program->SetUniform2f("sliceSize", slice);
+
+  state->PushFramebufferBindings();
+  g.grid_fbo->SetContext(window);
+  g.grid_fbo->Bind();
+  state->vtkglViewport(0, 0, grid.dims()[0], grid.dims()[1]);
+  state->vtkglClearColor(0, 0, 0, 0);
+  for (int k = 0; k < grid.dims()[2]; ++k)
+  {
+    g.grid_fbo->AddColorAttachment(0, g.grid_radiance, k);
+    g.grid_fbo->ActivateDrawBuffers(1);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    if (g.slice_range[k].second > 0)
+    {
+      glDrawArrays(GL_POINTS, g.slice_range[k].first, g.slice_range[k].second);
+    }
+  }
+  g.grid_fbo->RemoveColorAttachments(1);
+  state->PopFramebufferBindings();
+  pv.vao->Release();
+  g.atlas_point->Deactivate();
+  g.atlas_power->Deactivate();
+  g.atlas_normal->Deactivate();
+  return true;
+}
+
+bool TranslucentActorState::run_surfels(
+  vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error)
+{
+  Gpu& g = *gpu_;
+  const std::string fs = WithPieces(sss_surfel_resolve_fs, gather_source(settings));
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(sss_surfel_resolve_vs, fs.c_str(), "");
+  if (!program)
+  {
+    error = "the per-surfel shaders did not compile";
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable depth_test(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable point_size(state, GL_PROGRAM_POINT_SIZE);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+
+  ProgramVAO& pv = g.resolve_vao;
+  pv.vao->Bind();
+  if (pv.needs(program))
+  {
+    pv.vao->ReleaseGraphicsResources();
+    pv.vao->Bind();
+    pv.vao->AddAttributeArray(program, g.points, "pointLocal", 0, 12, VTK_FLOAT, 3, false);
+    pv.program = program;
+  }
+  g.atlas_point->Activate();
+  g.atlas_power->Activate();
+  g.atlas_normal->Activate();
+  const bool use_grid = static_cast<bool>(g.grid);
+  const bool near_only = settings.strategy == KernelStrategy::GridNear;
+  const bool gather_here = !use_grid || near_only;
+  const double r0 = use_grid ? settings.near_field_cells * g.grid->spacing() : 0.0;
+  set_gather_uniforms(program, settings, near_only ? 1 : 0, r0, 2.0 * r0);
+  program->SetUniformi("gatherAtSurfel", gather_here ? 1 : 0);
+  program->SetUniformi("useGrid", use_grid ? 1 : 0);
+  // A sampler3D must not share a texture unit with the maps' sampler2Ds, even unused.
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  const int spare_unit = use_grid ? -1 : units->Allocate();
+  program->SetUniformi("gridRadiance", spare_unit);
+  if (use_grid)
+  {
+    const VirtualGrid& grid = *g.grid;
+    g.grid_radiance->Activate();
+    program->SetUniformi("gridRadiance", g.grid_radiance->GetTextureUnit());
+    const float origin[3] = { static_cast<float>(grid.origin().x()),
+      static_cast<float>(grid.origin().y()), static_cast<float>(grid.origin().z()) };
+    program->SetUniform3f("gridOrigin", origin);
+    program->SetUniformf("gridSpacing", static_cast<float>(grid.spacing()));
+    const float dims[3] = { float(grid.dims()[0]), float(grid.dims()[1]), float(grid.dims()[2]) };
+    program->SetUniform3f("gridDims", dims);
+  }
+  program->SetUniformi("listWidth", list_width_);
+  const float list_size[2] = { float(list_width_), float(g.list_height) };
+  program->SetUniform2f("listSize", list_size);
+
+  state->PushFramebufferBindings();
+  g.list_fbo->SetContext(window);
+  g.list_fbo->Bind();
+  g.list_fbo->AddColorAttachment(0, g.list);
+  g.list_fbo->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, list_width_, g.list_height);
+  state->vtkglClearColor(0, 0, 0, 0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(g.local.size()));
+  g.list_fbo->RemoveColorAttachments(1);
+  state->PopFramebufferBindings();
+  pv.vao->Release();
+  if (use_grid)
+  {
+    g.grid_radiance->Deactivate();
+  }
+  else
+  {
+    units->Free(spare_unit);
+  }
+  g.atlas_point->Deactivate();
+  g.atlas_power->Deactivate();
+  g.atlas_normal->Deactivate();
+  return true;
+}
+
+bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,
+  const PreparedSurfels& surfels, const Material& material, const std::vector<Rgb>& B,
+  std::string& error)
+{
+  if (B.size() != surfels.cloud.size())
+  {
+    error = "the given radiance has " + std::to_string(B.size()) + " values for " +
+      std::to_string(surfels.cloud.size()) + " surfels";
+    return false;
+  }
+  Gpu& g = *gpu_;
+  material_ = material;
+  g.local = LocalSurfels::from(surfels.cloud, material.mm_per_unit);
+  list_width_ = kListWidth;
+  g.list_height = static_cast<int>((B.size() + kListWidth - 1) / kListWidth);
+  std::vector<float> texels(4 * static_cast<std::size_t>(list_width_) * std::max(1, g.list_height), 0.0f);
+  for (std::size_t i = 0; i < B.size(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      texels[4 * i + c] = static_cast<float>(B[i][c]);
+    }
+  }
+  g.list = FloatTexture2D(window, list_width_, std::max(1, g.list_height));
+  g.list->Create2DFromRaw(list_width_, std::max(1, g.list_height), 4, VTK_FLOAT, texels.data());
+  valid_ = true;
+  geometry_time_ = 0;  // the next update() runs every step
+  material_key_.clear();
+  return true;
+}
+
+bool TranslucentActorState::read_surfel_radiance(vtkOpenGLRenderWindow* window, std::vector<Rgb>& B)
+{
+  Gpu& g = *gpu_;
+  if (!valid_ || !g.list)
+  {
+    return false;
+  }
+  std::vector<float> texels(4 * static_cast<std::size_t>(list_width_) * g.list_height);
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  g.list_fbo->SetContext(window);
+  g.list_fbo->Bind();
+  g.list_fbo->AddColorAttachment(0, g.list);
+  g.list_fbo->ActivateReadBuffer(0);
+  glReadPixels(0, 0, list_width_, g.list_height, GL_RGBA, GL_FLOAT, texels.data());
+  g.list_fbo->RemoveColorAttachments(1);
+  state->PopFramebufferBindings();
+  B.resize(g.local.size());
+  for (std::size_t i = 0; i < B.size(); ++i)
+  {
+    B[i] = { texels[4 * i], texels[4 * i + 1], texels[4 * i + 2] };
+  }
+  return true;
+}
+
+}

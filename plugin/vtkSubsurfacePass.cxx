@@ -1,0 +1,552 @@
+#include "vtkSubsurfacePass.h"
+
+#include "sssTranslucentActorState.h"
+#include "sss_composite_fs.h"
+#include "sss_dipole.h"
+#include "sss_subsurface_view_dec.h"
+#include "sss_subsurface_view_impl.h"
+#include "vtkSurfelMapper.h"
+#include "vtkTranslucentMaterial.h"
+
+#include "stopwatch.h"
+
+#include "vtkActor.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+vtkStandardNewMacro(vtkSubsurfacePass);
+
+struct vtkSubsurfacePass::Internals
+{
+  std::map<vtkActor*, std::unique_ptr<sss::TranslucentActorState>> States;
+  std::set<vtkActor*> Ready;  // translucent actors whose steps 1-2 are valid this frame
+  vtkNew<vtkOpenGLFramebufferObject> FrameBuffer;
+  vtkSmartPointer<vtkTextureObject> Colour, Depth;
+  std::unique_ptr<vtkOpenGLQuadHelper> Composite;
+  vtkNew<vtkFloatArray> Linear;
+  std::set<std::string> Reported;
+  std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> Precomputed;
+
+  void ReportOnce(vtkSubsurfacePass* self, const std::string& message, bool error)
+  {
+    if (!this->Reported.insert(message).second)
+    {
+      return;
+    }
+    if (error)
+    {
+      vtkErrorWithObjectMacro(self, << message);
+    }
+    else
+    {
+      vtkWarningWithObjectMacro(self, << message);
+    }
+  }
+};
+
+vtkSubsurfacePass::vtkSubsurfacePass()
+  : Impl(new Internals)
+{
+  vtkNew<vtkRenderStepsPass> steps;
+  this->SetDelegatePass(steps);
+  this->Impl->Linear->SetNumberOfComponents(3);
+}
+
+vtkSubsurfacePass::~vtkSubsurfacePass() = default;
+
+namespace
+{
+sss::Material CoreMaterial(vtkTranslucentMaterial* m)
+{
+  sss::Material material;
+  material.name = m->GetName();
+  for (int c = 0; c < 3; ++c)
+  {
+    material.sigma_a[c] = m->GetSigmaA()[c];
+    material.sigma_s_prime[c] = m->GetSigmaSPrime()[c];
+    material.eta[c] = m->GetEta();
+  }
+  material.mm_per_unit = m->GetMillimetresPerUnit();
+  return material;
+}
+
+vtkTextureObject* FloatTexture(vtkOpenGLRenderWindow* window, int w, int h)
+{
+  vtkTextureObject* tex = vtkTextureObject::New();
+  tex->SetContext(window);
+  tex->SetInternalFormat(GL_RGBA32F);
+  tex->SetFormat(GL_RGBA);
+  tex->SetDataType(GL_FLOAT);
+  tex->SetMinificationFilter(vtkTextureObject::Nearest);
+  tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+  tex->Allocate2D(w, h, 4, VTK_FLOAT);
+  return tex;
+}
+}
+
+void vtkSubsurfacePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* ren = s->GetRenderer();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window || !this->DelegatePass)
+  {
+    vtkErrorMacro(<< "needs an OpenGL render window and a delegate pass");
+    return;
+  }
+  Internals& impl = *this->Impl;
+  sss::Stopwatch frameClock;
+
+  // Lights, as directions from the object towards the light in world coordinates.
+  std::vector<std::pair<Eigen::Vector3d, sss::Rgb>> lights;
+  vtkLightCollection* collection = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
+    {
+      continue;
+    }
+    double p[3], f[3], c[3];
+    light->GetTransformedPosition(p);
+    light->GetTransformedFocalPoint(f);
+    light->GetDiffuseColor(c);
+    Eigen::Vector3d d(p[0] - f[0], p[1] - f[1], p[2] - f[2]);
+    if (!d.allFinite() || d.norm() == 0.0)
+    {
+      impl.ReportOnce(this, "a light's position equals its focal point; it is left out", false);
+      continue;
+    }
+    if (light->GetPositional())
+    {
+      impl.ReportOnce(this,
+        "positional lights are treated as directional (from the focal point to the position)",
+        false);
+    }
+    const double e = light->GetIntensity();
+    lights.push_back({ d.normalized(), { e * c[0], e * c[1], e * c[2] } });
+  }
+  if (lights.size() > static_cast<std::size_t>(sss::kMaxLights))
+  {
+    impl.ReportOnce(this,
+      "only the first " + std::to_string(sss::kMaxLights) + " lights light translucent actors",
+      false);
+    lights.resize(sss::kMaxLights);
+  }
+
+  sss::GpuSettings settings;
+  settings.strategy = static_cast<sss::KernelStrategy>(this->KernelStrategy);
+  settings.opening_angle = this->OpeningAngle;
+  settings.near_field_cells = this->NearFieldCells;
+  settings.grid_level = this->GridLevel;
+  settings.texel_per_z_r = this->TexelPerZr;
+  settings.max_map_size = this->MaxMapSize;
+
+  // Steps 1-2 for each translucent actor, where their inputs changed.
+  impl.Ready.clear();
+  std::set<vtkActor*> seen;
+  sss::StepReport total;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    vtkTranslucentMaterial* material = vtkTranslucentMaterial::GetFrom(actor);
+    if (!actor || !material || !actor->GetVisibility())
+    {
+      continue;
+    }
+    auto* mapper = vtkSurfelMapper::SafeDownCast(actor->GetMapper());
+    if (!mapper)
+    {
+      impl.ReportOnce(this,
+        "an actor carries a translucent material but its mapper is not a vtkSurfelMapper; it "
+        "draws as before",
+        false);
+      continue;
+    }
+    const std::string invalid = material->Validate();
+    if (!invalid.empty())
+    {
+      impl.ReportOnce(this, "translucent material: " + invalid, true);
+      continue;
+    }
+    const sss::PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
+    if (!surfels.error.empty())
+    {
+      continue;  // the mapper reports it and draws nothing
+    }
+    if (lights.empty())
+    {
+      impl.ReportOnce(this,
+        "the renderer has no switched-on light: translucent actors receive no light and are "
+        "black",
+        false);
+    }
+    seen.insert(actor);
+    // Lights into the actor's model frame (rotation and uniform scale).
+    Eigen::Matrix3d linear;
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        linear(r, c) = actor->GetMatrix()->GetElement(r, c);
+      }
+    }
+    const double scale = std::cbrt(std::fabs(linear.determinant()));
+    std::vector<sss::GpuLight> local;
+    for (const auto& l : lights)
+    {
+      local.push_back({ (linear.inverse() * l.first).normalized(), l.second });
+    }
+    sss::Material core = CoreMaterial(material);
+    core.mm_per_unit *= scale;
+    auto& state = impl.States[actor];
+    if (!state)
+    {
+      state = std::make_unique<sss::TranslucentActorState>();
+    }
+    sss::StepReport report;
+    std::string error;
+    auto precomputed = impl.Precomputed.find(actor);
+    if (precomputed != impl.Precomputed.end())
+    {
+      std::vector<sss::Rgb> B(surfels.cloud.size());
+      vtkFloatArray* given = precomputed->second;
+      const bool fits = given->GetNumberOfComponents() == 3 &&
+        given->GetNumberOfTuples() == static_cast<vtkIdType>(surfels.report.input);
+      for (std::size_t k = 0; fits && k < B.size(); ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          B[k][c] = given->GetValue(static_cast<vtkIdType>(3 * surfels.cloud.input_index[k] + c));
+        }
+      }
+      if (!fits)
+      {
+        impl.ReportOnce(this, "precomputed radiance needs 3 components per input point", true);
+        continue;
+      }
+      if (!state->show_radiance(window, surfels, core, B, error))
+      {
+        impl.ReportOnce(this, "precomputed radiance: " + error, true);
+        continue;
+      }
+      impl.Ready.insert(actor);
+      continue;
+    }
+    if (!state->update(window, surfels, mapper->GetSurfelsTime(), core,
+          material->GetColoursAsAlbedo(), local, settings, this->MeasureStepTimes, report, error))
+    {
+      impl.ReportOnce(this, "subsurface scattering is off for an actor: " + error, true);
+      continue;
+    }
+    impl.Ready.insert(actor);
+    if (report.illumination)
+    {
+      ++this->IlluminationRuns;
+      this->LastIlluminationSeconds = report.seconds_illumination;
+      this->LastLitSamples = static_cast<vtkIdType>(report.lit_samples);
+      this->LastMapWidth = report.map_width;
+      this->LastMapHeight = report.map_height;
+      this->LastTexelMillimetres = report.texel_mm;
+    }
+    if (report.virtual_points)
+    {
+      ++this->VirtualPointRuns;
+      this->LastVirtualPointSeconds = report.seconds_virtual_points;
+      this->LastVirtualPoints = static_cast<vtkIdType>(report.virtual_point_count);
+      this->LastGridLevel = report.grid_level;
+      this->LastGridSpacingMillimetres = report.grid_spacing_mm;
+    }
+    else if (report.illumination)
+    {
+      this->LastVirtualPoints = 0;
+      this->LastGridLevel = 0;
+      this->LastGridSpacingMillimetres = 0;
+    }
+    if (report.surfels)
+    {
+      ++this->SurfelRuns;
+      this->LastSurfelSeconds = report.seconds_surfels;
+    }
+    this->LastSurfels = static_cast<vtkIdType>(report.surfel_count);
+  }
+  for (auto it2 = impl.States.begin(); it2 != impl.States.end();)
+  {
+    if (seen.count(it2->first) == 0)
+    {
+      it2->second->release(window);
+      it2 = impl.States.erase(it2);
+    }
+    else
+    {
+      ++it2;
+    }
+  }
+  this->LastTranslucentActors = static_cast<int>(impl.Ready.size());
+  frameClock.lap();  // the view's time starts here
+
+  // Step 3: the delegate renders everything into the float image; translucent surfels take
+  // their radiance from this pass through the render-pass shader protocol.
+  int width, height, x0, y0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width < 1 || height < 1)
+  {
+    return;
+  }
+  if (!impl.Colour || impl.Colour->GetWidth() != static_cast<unsigned int>(width) ||
+    impl.Colour->GetHeight() != static_cast<unsigned int>(height))
+  {
+    if (impl.Colour)
+    {
+      impl.Colour->ReleaseGraphicsResources(window);
+      impl.Depth->ReleaseGraphicsResources(window);
+    }
+    impl.Colour.TakeReference(FloatTexture(window, width, height));
+    impl.Depth = vtkSmartPointer<vtkTextureObject>::New();
+    impl.Depth->SetContext(window);
+    impl.Depth->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  }
+  for (vtkActor* actor : impl.Ready)
+  {
+    vtkOpenGLRenderPass::RenderPasses()->Append(actor->GetPropertyKeys(), this);
+  }
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  impl.FrameBuffer->SetContext(window);
+  impl.FrameBuffer->Bind();
+  impl.FrameBuffer->AddColorAttachment(0, impl.Colour);
+  impl.FrameBuffer->AddDepthAttachment(impl.Depth);
+  impl.FrameBuffer->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(state);
+    vtkOpenGLState::ScopedglScissor scissor(state);
+    state->vtkglViewport(0, 0, width, height);
+    state->vtkglScissor(0, 0, width, height);
+    vtkRenderState inner(ren);
+    inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    inner.SetFrameBuffer(impl.FrameBuffer);
+    this->DelegatePass->Render(&inner);
+    this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  }
+  for (vtkActor* actor : impl.Ready)
+  {
+    vtkOpenGLRenderPass::RenderPasses()->Remove(actor->GetPropertyKeys(), this);
+    impl.States[actor]->surfel_radiance()->Deactivate();
+  }
+  if (this->CaptureLinearImage)
+  {
+    std::vector<float> rgba(4 * static_cast<std::size_t>(width) * height);
+    impl.FrameBuffer->ActivateReadBuffer(0);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    impl.Linear->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+    for (vtkIdType p = 0; p < impl.Linear->GetNumberOfTuples(); ++p)
+    {
+      const bool translucent = rgba[4 * p + 3] > 1.5f;
+      for (int c = 0; c < 3; ++c)
+      {
+        impl.Linear->SetValue(3 * p + c, translucent ? rgba[4 * p + c] : 0.0f);
+      }
+    }
+    this->LinearWidth = width;
+    this->LinearHeight = height;
+  }
+  impl.FrameBuffer->RemoveColorAttachments(1);
+  impl.FrameBuffer->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+
+  // Composite into the output, with depth, tone mapping translucent pixels.
+  if (!impl.Composite)
+  {
+    impl.Composite = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr, sss_composite_fs, "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(impl.Composite->Program);
+  }
+  vtkShaderProgram* composite = impl.Composite->Program;
+  if (!composite)
+  {
+    vtkErrorMacro(<< "the composite shader did not compile");
+    return;
+  }
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  state->vtkglViewport(x0, y0, width, height);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDisable(GL_BLEND);
+  impl.Colour->Activate();
+  impl.Depth->Activate();
+  composite->SetUniformi("colourTexture", impl.Colour->GetTextureUnit());
+  composite->SetUniformi("depthTexture", impl.Depth->GetTextureUnit());
+  composite->SetUniformf("exposure", static_cast<float>(this->Exposure));
+  impl.Composite->Render();
+  impl.Colour->Deactivate();
+  impl.Depth->Deactivate();
+  if (!impl.Ready.empty())
+  {
+    ++this->ViewRuns;
+    if (this->MeasureStepTimes)
+    {
+      glFinish();
+    }
+    this->LastViewSeconds = frameClock.lap();
+  }
+}
+
+bool vtkSubsurfacePass::PreReplaceShaderValues(std::string& vertexShader, std::string&,
+  std::string&, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Ready.count(actor))
+  {
+    return true;
+  }
+  std::string dec = sss_subsurface_view_dec;
+  vtkShaderProgram::Substitute(dec, "//SSS::Dipole::Dec", sss_dipole, true);
+  vtkShaderProgram::Substitute(vertexShader, "//SSS::Radiance::Dec", dec, true);
+  vtkShaderProgram::Substitute(
+    vertexShader, "//SSS::Radiance::Impl", sss_subsurface_view_impl, true);
+  return true;
+}
+
+bool vtkSubsurfacePass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Ready.count(actor))
+  {
+    return true;
+  }
+  sss::TranslucentActorState& state = *this->Impl->States[actor];
+  vtkTextureObject* radiance = state.surfel_radiance();
+  radiance->Activate();
+  program->SetUniformi("surfelRadiance", radiance->GetTextureUnit());
+  program->SetUniformi("surfelListWidth", state.list_width());
+  float eta[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    eta[c] = static_cast<float>(state.material().eta[c]);
+  }
+  program->SetUniform3f("eta", eta);
+  return true;
+}
+
+void vtkSubsurfacePass::SetPrecomputedRadiance(vtkActor* actor, vtkFloatArray* B)
+{
+  if (!actor)
+  {
+    return;
+  }
+  if (B)
+  {
+    this->Impl->Precomputed[actor] = B;
+  }
+  else
+  {
+    this->Impl->Precomputed.erase(actor);
+  }
+  this->Modified();
+}
+
+vtkFloatArray* vtkSubsurfacePass::GetLinearImage()
+{
+  return this->Impl->Linear;
+}
+
+bool vtkSubsurfacePass::GetSurfelRadiance(vtkActor* actor, vtkFloatArray* B)
+{
+  auto found = this->Impl->States.find(actor);
+  auto* mapper = actor ? vtkSurfelMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+  if (found == this->Impl->States.end() || !mapper || !B)
+  {
+    return false;
+  }
+  auto* window = this->Impl->FrameBuffer->GetContext();
+  std::vector<sss::Rgb> values;
+  if (!window || !found->second->read_surfel_radiance(window, values))
+  {
+    return false;
+  }
+  const sss::PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
+  B->SetNumberOfComponents(3);
+  B->SetNumberOfTuples(static_cast<vtkIdType>(surfels.report.input));
+  B->Fill(std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t k = 0; k < values.size() && k < surfels.cloud.input_index.size(); ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      B->SetValue(static_cast<vtkIdType>(3 * surfels.cloud.input_index[k] + c),
+        static_cast<float>(values[k][c]));
+    }
+  }
+  return true;
+}
+
+void vtkSubsurfacePass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  Internals& impl = *this->Impl;
+  for (auto& entry : impl.States)
+  {
+    entry.second->release(w);
+  }
+  impl.States.clear();
+  impl.Ready.clear();
+  impl.FrameBuffer->ReleaseGraphicsResources(w);
+  if (impl.Colour)
+  {
+    impl.Colour->ReleaseGraphicsResources(w);
+    impl.Depth->ReleaseGraphicsResources(w);
+    impl.Colour = nullptr;
+    impl.Depth = nullptr;
+  }
+  if (impl.Composite)
+  {
+    impl.Composite->ReleaseGraphicsResources(w);
+    impl.Composite.reset();
+  }
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "KernelStrategy: " << this->KernelStrategy << "\n";
+  os << indent << "OpeningAngle: " << this->OpeningAngle << "\n";
+  os << indent << "NearFieldCells: " << this->NearFieldCells << "\n";
+  os << indent << "GridLevel: " << this->GridLevel << "\n";
+  os << indent << "TexelPerZr: " << this->TexelPerZr << "\n";
+  os << indent << "MaxMapSize: " << this->MaxMapSize << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "Runs (illumination, virtual points, surfels, view): " << this->IlluminationRuns
+     << " " << this->VirtualPointRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";
+}

@@ -1,0 +1,128 @@
+#include "vtkTranslucentMaterial.h"
+
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseKey.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkProp.h"
+
+#include "material.h"
+
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkTranslucentMaterial);
+vtkInformationKeyMacro(vtkTranslucentMaterial, MATERIAL, ObjectBase);
+
+vtkTranslucentMaterial::vtkTranslucentMaterial()
+{
+  this->SetPreset("marble");
+}
+
+bool vtkTranslucentMaterial::SetPreset(const char* name)
+{
+  try
+  {
+    const sss::Material preset = sss::Material::preset(name ? name : "");
+    this->Name = preset.name;
+    for (int c = 0; c < 3; ++c)
+    {
+      this->SigmaA[c] = preset.sigma_a[c];
+      this->SigmaSPrime[c] = preset.sigma_s_prime[c];
+    }
+    this->Modified();
+    return true;
+  }
+  catch (const std::invalid_argument& error)
+  {
+    vtkErrorMacro(<< error.what());
+    return false;
+  }
+}
+
+void vtkTranslucentMaterial::SetSigmaA(double r, double g, double b)
+{
+  this->SigmaA[0] = r;
+  this->SigmaA[1] = g;
+  this->SigmaA[2] = b;
+  this->Name = "custom";
+  this->Modified();
+}
+
+void vtkTranslucentMaterial::SetSigmaSPrime(double r, double g, double b)
+{
+  this->SigmaSPrime[0] = r;
+  this->SigmaSPrime[1] = g;
+  this->SigmaSPrime[2] = b;
+  this->Name = "custom";
+  this->Modified();
+}
+
+std::string vtkTranslucentMaterial::Validate() const
+{
+  sss::Material m;
+  for (int c = 0; c < 3; ++c)
+  {
+    m.sigma_a[c] = this->SigmaA[c];
+    m.sigma_s_prime[c] = this->SigmaSPrime[c];
+    m.eta[c] = this->Eta;
+  }
+  m.mm_per_unit = this->MillimetresPerUnit;
+  try
+  {
+    m.validate();
+  }
+  catch (const std::invalid_argument& error)
+  {
+    return error.what();
+  }
+  return {};
+}
+
+void vtkTranslucentMaterial::ApplyTo(vtkProp* prop)
+{
+  if (!prop)
+  {
+    vtkErrorMacro(<< "ApplyTo: no prop given");
+    return;
+  }
+  vtkInformation* keys = prop->GetPropertyKeys();
+  if (!keys)
+  {
+    vtkNew<vtkInformation> created;
+    prop->SetPropertyKeys(created);
+    keys = created;
+  }
+  keys->Set(MATERIAL(), this);
+  prop->Modified();
+}
+
+void vtkTranslucentMaterial::RemoveFrom(vtkProp* prop)
+{
+  if (prop && prop->GetPropertyKeys())
+  {
+    prop->GetPropertyKeys()->Remove(MATERIAL());
+    prop->Modified();
+  }
+}
+
+vtkTranslucentMaterial* vtkTranslucentMaterial::GetFrom(vtkProp* prop)
+{
+  if (!prop || !prop->GetPropertyKeys())
+  {
+    return nullptr;
+  }
+  return vtkTranslucentMaterial::SafeDownCast(prop->GetPropertyKeys()->Get(MATERIAL()));
+}
+
+void vtkTranslucentMaterial::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Name: " << this->Name << "\n";
+  os << indent << "SigmaA (1/mm): " << this->SigmaA[0] << " " << this->SigmaA[1] << " "
+     << this->SigmaA[2] << "\n";
+  os << indent << "SigmaSPrime (1/mm): " << this->SigmaSPrime[0] << " " << this->SigmaSPrime[1]
+     << " " << this->SigmaSPrime[2] << "\n";
+  os << indent << "Eta: " << this->Eta << "\n";
+  os << indent << "MillimetresPerUnit: " << this->MillimetresPerUnit << "\n";
+  os << indent << "ColoursAsAlbedo: " << this->ColoursAsAlbedo << "\n";
+}

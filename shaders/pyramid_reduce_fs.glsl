@@ -1,0 +1,55 @@
+//VTK::System::Dec
+// Builds one level of the illumination map's pyramid from the level below: summed power,
+// power-weighted mean point and normal, and how far the children spread along the light.
+
+uniform sampler2D mapPoint;   // xyz point (local mm), w: weight (sum of the power's channels)
+uniform sampler2D mapPower;   // rgb: E dA, w: lit texels
+uniform sampler2D mapNormal;  // xyz: unit normal, w: spread along the light (mm)
+uniform ivec2 sourceOrigin;
+uniform ivec2 sourceSize;
+uniform ivec2 targetSize;
+
+in vec2 texCoord;  // over the target level's rectangle
+uniform vec3 towardsLight;
+
+//VTK::Output::Dec
+
+void main()
+{
+  ivec2 target = ivec2(texCoord * vec2(targetSize));
+  vec4 point[4];
+  vec4 normal[4];
+  float weight = 0.0;
+  vec3 pointSum = vec3(0.0);
+  vec3 normalSum = vec3(0.0);
+  vec4 power = vec4(0.0);
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 child = 2 * target + ivec2(k & 1, k >> 1);
+    point[k] = vec4(0.0);
+    normal[k] = vec4(0.0);
+    if (child.x >= sourceSize.x || child.y >= sourceSize.y)
+    {
+      continue;
+    }
+    point[k] = texelFetch(mapPoint, sourceOrigin + child, 0);
+    normal[k] = texelFetch(mapNormal, sourceOrigin + child, 0);
+    power += texelFetch(mapPower, sourceOrigin + child, 0);
+    weight += point[k].w;
+    pointSum += point[k].w * point[k].xyz;
+    normalSum += point[k].w * normal[k].xyz;
+  }
+  vec3 mean = weight > 0.0 ? pointSum / weight : vec3(0.0);
+  float spread = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (point[k].w > 0.0)
+    {
+      spread = max(spread, abs(dot(point[k].xyz - mean, towardsLight)) + normal[k].w);
+    }
+  }
+  float normalLength = length(normalSum);
+  gl_FragData[0] = vec4(mean, weight);
+  gl_FragData[1] = power;
+  gl_FragData[2] = vec4(normalLength > 0.0 ? normalSum / normalLength : vec3(0.0), spread);
+}

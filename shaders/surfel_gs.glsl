@@ -1,0 +1,39 @@
+//VTK::System::Dec
+// Expands each surfel into a quad in the plane of its disc: the quad's depth is the disc's
+// own, so depth testing is exact, and there is no point-size limit at close zoom.
+
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+
+in vec3 centreVC_gs[];
+in vec3 normalVC_gs[];
+flat in vec4 colour_gs[];
+
+uniform mat4 viewToClip;
+uniform float radiusVC;  // disc radius in view units
+
+out vec2 discCoord;  // position on the disc, in radii
+out vec3 pointVC;    // the point on the disc, view coordinates
+flat out vec3 normalVC;
+flat out vec4 colour;
+
+void main()
+{
+  vec3 n = normalVC_gs[0];
+  vec3 helper = abs(n.x) < 0.7 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 t1 = normalize(cross(n, helper));
+  vec3 t2 = cross(n, t1);
+  const vec2 corners[4] = vec2[4](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0),
+                                  vec2(1.0, 1.0));
+  for (int i = 0; i < 4; ++i)
+  {
+    vec3 p = centreVC_gs[0] + radiusVC * (corners[i].x * t1 + corners[i].y * t2);
+    gl_Position = viewToClip * vec4(p, 1.0);
+    discCoord = corners[i];
+    pointVC = p;
+    normalVC = n;
+    colour = colour_gs[0];
+    EmitVertex();
+  }
+  EndPrimitive();
+}

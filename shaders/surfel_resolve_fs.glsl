@@ -1,0 +1,30 @@
+//VTK::System::Dec
+// Step 2, per surfel: B at the surfel = its own gather (all of the kernel, or the near part)
+// plus the far part interpolated trilinearly from the virtual points.
+
+flat in vec3 receiver;
+
+uniform bool useGrid;
+uniform sampler3D gridRadiance;  // (B, 1) at kept points, 0 at pruned ones
+uniform vec3 gridOrigin;         // local mm
+uniform float gridSpacing;       // mm
+uniform vec3 gridDims;
+uniform bool gatherAtSurfel;
+
+//SSS::Gather::Dec
+
+//VTK::Output::Dec
+
+void main()
+{
+  vec3 B = gatherAtSurfel ? gatherB(receiver) : vec3(0.0);
+  if (useGrid)
+  {
+    vec4 far = texture(gridRadiance, ((receiver - gridOrigin) / gridSpacing + 0.5) / gridDims);
+    if (far.w > 1e-6)
+    {
+      B += far.rgb / far.w;
+    }
+  }
+  gl_FragData[0] = vec4(B, 1.0);
+}

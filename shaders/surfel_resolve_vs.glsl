@@ -1,0 +1,17 @@
+//VTK::System::Dec
+// Step 2, per surfel: one GL point per surfel, drawn into texel gl_VertexID of a list
+// texture that the camera view reads.
+
+in vec3 pointLocal;  // local mm
+uniform int listWidth;
+uniform vec2 listSize;
+
+flat out vec3 receiver;
+
+void main()
+{
+  receiver = pointLocal;
+  vec2 texel = vec2(gl_VertexID % listWidth, gl_VertexID / listWidth) + 0.5;
+  gl_Position = vec4(texel / listSize * 2.0 - 1.0, 0.0, 1.0);
+  gl_PointSize = 1.0;
+}

@@ -1,0 +1,32 @@
+//VTK::System::Dec
+// Surfels: each point is the centre of a disc of one radius, expanded by surfel_gs.glsl.
+// The same stage serves the camera view and the view from a light.
+
+in vec3 positionMC;  // model coordinates relative to the cloud's bounds centre
+in vec3 normalMC;
+in vec4 colourMC;
+
+uniform mat4 modelToView;  // shifted model coordinates -> view (eye or light) coordinates
+uniform mat3 normalToView;
+uniform bool orthographic;
+uniform vec3 ambientDiffuse;  // ambient, diffuse, opacity of the plain (non-translucent) look
+
+out vec3 centreVC_gs;
+out vec3 normalVC_gs;
+flat out vec4 colour_gs;
+
+//SSS::Radiance::Dec
+
+void main()
+{
+  vec4 centre = modelToView * vec4(positionMC, 1.0);
+  centreVC_gs = centre.xyz;
+  normalVC_gs = normalize(normalToView * normalMC);
+  vec3 towardsViewer = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-centre.xyz);
+  float cosOut = abs(dot(normalVC_gs, towardsViewer));
+  // plain look: Lambert under a headlight, two-sided
+  vec4 colour = vec4(colourMC.rgb * (ambientDiffuse.x + ambientDiffuse.y * cosOut),
+                     colourMC.a * ambientDiffuse.z);
+  //SSS::Radiance::Impl
+  colour_gs = colour;
+}
