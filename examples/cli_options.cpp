@@ -74,15 +74,16 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
                             same way
   --backend osmesa|egl|x    OpenGL context: OSMesa or EGL surfaceless (no display needed;
                             default egl) or an X window (needs DISPLAY)
-  --strategy NAME           GPU kernel: grid-near (default; far part on the virtual grid,
-                            near part per surfel), surfel (pyramid walk at every surfel),
+  --strategy NAME           GPU kernel: surfel (default; pyramid walk at every surfel),
+                            grid-near (far part on the virtual grid, near part per surfel),
                             grid (pyramid walk at the virtual points only), paper (49
                             Gaussian taps in a 40x40 window of a 512x512 map, grid only)
   --grid-level K            virtual grid of 2^K points per axis (default 0: automatic)
   --max-map N               largest illumination-map side, texels (default 4096)
   --opening-angle V         pyramid walk accuracy, smaller is finer (default 0.5)
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
-  --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 1)
+  --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
+                            the brightest point's Lo maps to white)
   --help                    this text
 )";
 }

@@ -26,11 +26,11 @@ struct Options {
   int width = 512, height = 512;
   std::string method = "grid";
   std::string backend = "egl";
-  std::string strategy = "grid-near";
+  std::string strategy = "surfel";
   int grid_level = 0;
   int max_map_size = 4096;
   double opening_angle = 0.5;
-  double exposure = 1.0;
+  double exposure = 0.0;  // 0: automatic
   double texel_per_z_r = 0.25;
   bool help = false;
 };

@@ -17,6 +17,7 @@
 #include <vtkTranslucentMaterial.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -88,7 +89,7 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"requested_grid_level\": " << o.grid_level
         << ", \"opening_angle\": " << o.opening_angle
         << ", \"near_field_cells\": " << pass->GetNearFieldCells()
-        << ", \"exposure\": " << o.exposure << "},\n"
+        << ", \"exposure\": " << pass->GetExposure() << "},\n"
         << "  \"steps_run\": {\"illumination\": " << pass->GetIlluminationRuns()
         << ", \"virtual_points\": " << pass->GetVirtualPointRuns()
         << ", \"surfels\": " << pass->GetSurfelRuns() << ", \"view\": " << pass->GetViewRuns()
@@ -223,12 +224,20 @@ int run(const Options& o) {
   clock.lap();
   window->Render();
   timings.first_frame = clock.lap();
-  camera->Azimuth(0.0);  // a camera-only change: step 3 alone
-  camera->Modified();
-  window->Render();
-  timings.camera_frame = clock.lap();
   if (pass->GetLastTranslucentActors() != 1)
     throw std::runtime_error("the cloud could not be rendered translucent (see the errors above)");
+  vtkNew<vtkFloatArray> B;
+  if (!pass->GetSurfelRadiance(actor, B)) throw std::runtime_error("no radiance was computed");
+  if (o.exposure == 0.0) {  // automatic: the brightest surfel's B at normal exit maps to white
+    double brightest = 0.0;
+    for (vtkIdType i = 0; i < B->GetNumberOfValues(); ++i)
+      if (std::isfinite(B->GetValue(i))) brightest = std::max<double>(brightest, B->GetValue(i));
+    const double white = brightest * sss::fresnel_transmittance(material.eta[0], 1.0);
+    pass->SetExposure(white > 0.0 ? 1.0 / white : 1.0);
+  }
+  camera->Modified();  // a camera-only change: step 3 alone
+  window->Render();
+  timings.camera_frame = clock.lap();
 
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
@@ -248,8 +257,6 @@ int run(const Options& o) {
     sss::write_pfm(image, o.linear_pfm);
   }
   if (!o.bake_ply.empty()) {
-    vtkNew<vtkFloatArray> B;
-    if (!pass->GetSurfelRadiance(actor, B)) throw std::runtime_error("no radiance to bake");
     double eye[3];
     camera->GetPosition(eye);
     const Eigen::Vector3d eye_position(eye[0], eye[1], eye[2]);

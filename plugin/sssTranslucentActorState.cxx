@@ -45,7 +45,7 @@ namespace
 {
 // Sources beyond this distance carry less than this fraction of the kernel's integral.
 constexpr double kSupportFraction = 1e-7;
-constexpr int kListWidth = 2048;
+constexpr int kListWidth = 256;  // a squarish list keeps the rasteriser's tiles (threads) busy
 
 struct LevelRect
 {
@@ -124,7 +124,8 @@ struct TranslucentActorState::Gpu
   std::vector<OrthoView> maps;
   std::vector<std::vector<LevelRect>> levels;
   int atlas_width = 0, atlas_height = 0;
-  vtkSmartPointer<vtkTextureObject> atlas_point, atlas_power, atlas_normal, atlas_depth;
+  vtkSmartPointer<vtkTextureObject> atlas_point, atlas_power, atlas_normal, atlas_cov0,
+    atlas_cov1, atlas_depth;
   vtkNew<vtkOpenGLFramebufferObject> map_fbo, grid_fbo, list_fbo;
   std::unique_ptr<vtkOpenGLQuadHelper> reduce;
 
@@ -135,6 +136,32 @@ struct TranslucentActorState::Gpu
 
   vtkSmartPointer<vtkTextureObject> list;
   int list_height = 1;
+
+  void activate_maps()
+  {
+    for (vtkTextureObject* t : { atlas_point.Get(), atlas_power.Get(), atlas_normal.Get(),
+           atlas_cov0.Get(), atlas_cov1.Get() })
+    {
+      t->Activate();
+    }
+  }
+  void deactivate_maps()
+  {
+    for (vtkTextureObject* t : { atlas_point.Get(), atlas_power.Get(), atlas_normal.Get(),
+           atlas_cov0.Get(), atlas_cov1.Get() })
+    {
+      t->Deactivate();
+    }
+  }
+  // The maps' samplers, named as in the shaders.
+  void set_map_samplers(vtkShaderProgram* program)
+  {
+    program->SetUniformi("mapPoint", atlas_point->GetTextureUnit());
+    program->SetUniformi("mapPower", atlas_power->GetTextureUnit());
+    program->SetUniformi("mapNormal", atlas_normal->GetTextureUnit());
+    program->SetUniformi("mapCovariance0", atlas_cov0->GetTextureUnit());
+    program->SetUniformi("mapCovariance1", atlas_cov1->GetTextureUnit());
+  }
 
   void release(vtkWindow* window)
   {
@@ -147,7 +174,8 @@ struct TranslucentActorState::Gpu
       v->vao->ReleaseGraphicsResources();
       v->program = nullptr;
     }
-    for (auto* t : { &atlas_point, &atlas_power, &atlas_normal, &atlas_depth, &grid_radiance,
+    for (auto* t : { &atlas_point, &atlas_power, &atlas_normal, &atlas_cov0, &atlas_cov1,
+           &atlas_depth, &grid_radiance,
            &list })
     {
       if (*t)
@@ -419,9 +447,10 @@ void TranslucentActorState::set_gather_uniforms(vtkShaderProgram* program,
     const auto taps = paper_taps();
     program->SetUniform3fv("paperTaps", kPaperTapCount, &taps[0][0]);
   }
-  program->SetUniformi("mapPoint", g.atlas_point->GetTextureUnit());
-  program->SetUniformi("mapPower", g.atlas_power->GetTextureUnit());
-  program->SetUniformi("mapNormal", g.atlas_normal->GetTextureUnit());
+  if (g.atlas_point->GetTextureUnit() >= 0)
+  {
+    g.set_map_samplers(program);
+  }
 }
 
 bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
@@ -479,6 +508,8 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     g.atlas_point = FloatTexture2D(window, atlas_w, atlas_h);
     g.atlas_power = FloatTexture2D(window, atlas_w, atlas_h);
     g.atlas_normal = FloatTexture2D(window, atlas_w, atlas_h);
+    g.atlas_cov0 = FloatTexture2D(window, atlas_w, atlas_h);
+    g.atlas_cov1 = FloatTexture2D(window, atlas_w, atlas_h);
     g.atlas_depth = vtkSmartPointer<vtkTextureObject>::New();
     g.atlas_depth->SetContext(window);
     g.atlas_depth->AllocateDepth(atlas_w, atlas_h, vtkTextureObject::Float32);
@@ -500,8 +531,10 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   g.map_fbo->AddColorAttachment(0, g.atlas_point);
   g.map_fbo->AddColorAttachment(1, g.atlas_power);
   g.map_fbo->AddColorAttachment(2, g.atlas_normal);
+  g.map_fbo->AddColorAttachment(3, g.atlas_cov0);
+  g.map_fbo->AddColorAttachment(4, g.atlas_cov1);
   g.map_fbo->AddDepthAttachment(g.atlas_depth);
-  g.map_fbo->ActivateDrawBuffers(3);
+  g.map_fbo->ActivateDrawBuffers(5);
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, atlas_w, atlas_h);
@@ -572,6 +605,11 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     }
     program->SetUniform3f("irradianceArea", power);
     program->SetUniformi("albedoFromColour", albedo_from_colour ? 1 : 0);
+    const float axis_u[3] = { float(map.u.x()), float(map.u.y()), float(map.u.z()) };
+    const float axis_v[3] = { float(map.v.x()), float(map.v.y()), float(map.v.z()) };
+    program->SetUniform3f("mapAxisU", axis_u);
+    program->SetUniform3f("mapAxisV", axis_v);
+    program->SetUniformf("texelEdge", static_cast<float>(map.pixel));
     const LevelRect& r = g.levels[l][0];
     state->vtkglViewport(r.x, r.y, r.width, r.height);
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(g.local.size()));
@@ -596,12 +634,8 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     state->PopFramebufferBindings();
     return false;
   }
-  g.atlas_point->Activate();
-  g.atlas_power->Activate();
-  g.atlas_normal->Activate();
-  reduce->SetUniformi("mapPoint", g.atlas_point->GetTextureUnit());
-  reduce->SetUniformi("mapPower", g.atlas_power->GetTextureUnit());
-  reduce->SetUniformi("mapNormal", g.atlas_normal->GetTextureUnit());
+  g.activate_maps();
+  g.set_map_samplers(reduce);
   for (std::size_t l = 0; l < lights.size(); ++l)
   {
     const float towards[3] = { static_cast<float>(lights[l].towards_light.x()),
@@ -623,9 +657,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     }
   }
   TextureBarrier();
-  g.atlas_point->Deactivate();
-  g.atlas_power->Deactivate();
-  g.atlas_normal->Deactivate();
+  g.deactivate_maps();
 
   // Lit texels: the count the top of each pyramid holds.
   report.lit_samples = 0;
@@ -637,7 +669,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     glReadPixels(top.x, top.y, 1, 1, GL_RGBA, GL_FLOAT, texel_value);
     report.lit_samples += static_cast<std::size_t>(texel_value[3] + 0.5f);
   }
-  g.map_fbo->RemoveColorAttachments(3);
+  g.map_fbo->RemoveColorAttachments(5);
   g.map_fbo->RemoveDepthAttachment();
   state->PopFramebufferBindings();
   return true;
@@ -676,9 +708,7 @@ bool TranslucentActorState::run_virtual_points(
     pv.vao->AddAttributeArray(program, g.grid_index, "gridIndex", 0, 12, VTK_FLOAT, 3, false);
     pv.program = program;
   }
-  g.atlas_point->Activate();
-  g.atlas_power->Activate();
-  g.atlas_normal->Activate();
+  g.activate_maps();
   const bool split = settings.strategy == KernelStrategy::GridNear;
   const double r0 = settings.near_field_cells * grid.spacing();
   set_gather_uniforms(program, settings, split ? 2 : 0, r0, 2.0 * r0);
@@ -694,22 +724,23 @@ bool TranslucentActorState::run_virtual_points(
   g.grid_fbo->Bind();
   state->vtkglViewport(0, 0, grid.dims()[0], grid.dims()[1]);
   state->vtkglClearColor(0, 0, 0, 0);
+  GLenum draw_buffer = GL_COLOR_ATTACHMENT0;
+  state->vtkglDrawBuffers(1, &draw_buffer);
   for (int k = 0; k < grid.dims()[2]; ++k)
   {
-    g.grid_fbo->AddColorAttachment(0, g.grid_radiance, k);
-    g.grid_fbo->ActivateDrawBuffers(1);
+    // One layer of the 3-D texture at a time.
+    glFramebufferTextureLayer(
+      GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, g.grid_radiance->GetHandle(), 0, k);
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
     if (g.slice_range[k].second > 0)
     {
       glDrawArrays(GL_POINTS, g.slice_range[k].first, g.slice_range[k].second);
     }
   }
-  g.grid_fbo->RemoveColorAttachments(1);
+  glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
   state->PopFramebufferBindings();
   pv.vao->Release();
-  g.atlas_point->Deactivate();
-  g.atlas_power->Deactivate();
-  g.atlas_normal->Deactivate();
+  g.deactivate_maps();
   return true;
 }
 
@@ -745,9 +776,7 @@ bool TranslucentActorState::run_surfels(
     pv.vao->AddAttributeArray(program, g.points, "pointLocal", 0, 12, VTK_FLOAT, 3, false);
     pv.program = program;
   }
-  g.atlas_point->Activate();
-  g.atlas_power->Activate();
-  g.atlas_normal->Activate();
+  g.activate_maps();
   const bool use_grid = static_cast<bool>(g.grid);
   const bool near_only = settings.strategy == KernelStrategy::GridNear;
   const bool gather_here = !use_grid || near_only;
@@ -795,9 +824,7 @@ bool TranslucentActorState::run_surfels(
   {
     units->Free(spare_unit);
   }
-  g.atlas_point->Deactivate();
-  g.atlas_power->Deactivate();
-  g.atlas_normal->Deactivate();
+  g.deactivate_maps();
   return true;
 }
 

@@ -37,7 +37,7 @@ enum class KernelStrategy
 
 struct GpuSettings
 {
-  KernelStrategy strategy = KernelStrategy::GridNear;
+  KernelStrategy strategy = KernelStrategy::Surfel;
   double opening_angle = 0.5;
   double near_field_cells = 2.0;
   int grid_level = 0;

@@ -122,6 +122,10 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
 
   // Lights, as directions from the object towards the light in world coordinates.
   std::vector<std::pair<Eigen::Vector3d, sss::Rgb>> lights;
+  if (ren->GetLights()->GetNumberOfItems() == 0 && ren->GetAutomaticLightCreation())
+  {
+    ren->CreateLight();  // the headlight VTK would add later in this frame
+  }
   vtkLightCollection* collection = ren->GetLights();
   vtkCollectionSimpleIterator it;
   collection->InitTraversal(it);

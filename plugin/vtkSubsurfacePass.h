@@ -16,9 +16,9 @@
  *
  * The kernel strategy chooses how B is summed (KernelStrategy): PAPER is the paper's 49
  * Gaussian taps over a 40 x 40 window of a 512 x 512 map with the grid alone; GRID walks the
- * map's pyramid at the virtual points (grid alone); GRID_NEAR (the default) carries the far
- * part on the grid and sums the near part at each surfel; SURFEL walks the pyramid at every
- * surfel. All sums reach as far as the material's kernel does (1e-7 of its integral).
+ * map's pyramid at the virtual points (grid alone); GRID_NEAR carries the far part on the grid
+ * and sums the near part at each surfel; SURFEL (the default, the most accurate per second
+ * measured) walks the pyramid at every surfel. All sums reach as far as the material's kernel does (1e-7 of its integral).
  */
 #ifndef vtkSubsurfacePass_h
 #define vtkSubsurfacePass_h
@@ -48,7 +48,7 @@ public:
   };
 
   ///@{
-  /** How B is summed (see the class comment). Default GRID_NEAR. */
+  /** How B is summed (see the class comment). Default SURFEL. */
   vtkSetClampMacro(KernelStrategy, int, PAPER, SURFEL);
   vtkGetMacro(KernelStrategy, int);
   ///@}
@@ -167,7 +167,7 @@ protected:
   vtkSubsurfacePass();
   ~vtkSubsurfacePass() override;
 
-  int KernelStrategy = GRID_NEAR;
+  int KernelStrategy = SURFEL;
   double OpeningAngle = 0.5;
   double NearFieldCells = 2.0;
   int GridLevel = 0;

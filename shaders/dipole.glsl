@@ -25,6 +25,41 @@ vec3 dipoleRd(vec3 p, vec3 n, vec3 x)
   return rd;
 }
 
+// One pole's term of eq. 3 (z (1 + s d) e^(-s d) / d^3) at the pole's distance from x,
+// averaged over sources with covariance `cov` around the pole by its second-order Taylor
+// expansion; inside the planar minimum distance the term is flat and taken as it is.
+float poleTermSecondOrder(vec3 pole, vec3 x, float z, float s, mat3 cov)
+{
+  vec3 offset = pole - x;
+  float d = length(offset);
+  if (d <= z)
+  {
+    return (1.0 + s * z) * exp(-s * z) / (z * z);
+  }
+  float sd = s * d;
+  float e = exp(-sd);
+  float d3 = d * d * d;
+  float value = z * (1.0 + sd) * e / d3;
+  float d1 = -z * e * (3.0 + 3.0 * sd + sd * sd) / (d3 * d);
+  float d2 = z * e * (12.0 + 12.0 * sd + 5.0 * sd * sd + sd * sd * sd) / (d3 * d * d);
+  vec3 u = offset / d;
+  float along = dot(u, cov * u);
+  float trace = cov[0][0] + cov[1][1] + cov[2][2];
+  return value + 0.5 * (d2 * along + d1 / d * (trace - along));
+}
+
+// Eq. 3 summed over a group of sources with mean point p, normal n and point covariance cov.
+vec3 dipoleRdSecondOrder(vec3 p, vec3 n, mat3 cov, vec3 x)
+{
+  vec3 rd;
+  for (int c = 0; c < 3; ++c)
+  {
+    rd[c] = rdFactor[c] * (poleTermSecondOrder(p - zR[c] * n, x, zR[c], sTr[c], cov) +
+      poleTermSecondOrder(p + zV[c] * n, x, zV[c], sTr[c], cov));
+  }
+  return rd;
+}
+
 // 1 - Fresnel reflectance of an unpolarised ray (exact dielectric formula), from the side of
 // index 1 into the medium of index etaIn, at incidence cosine cosI.
 float fresnelTransmittance(float etaIn, float cosI)

@@ -1,10 +1,13 @@
 // B(x) of eq. 17 from the illumination maps' pyramids: a tree walk over the map texels that
-// takes a texel group as one source once it subtends less than openingAngle seen from x
-// (the GPU form of the CPU reference's source tree). Needs dipole.glsl and kernel_window.glsl.
+// takes a texel group as one source, with its point covariance as a second-order term, once it
+// subtends less than openingAngle seen from x (the GPU form of the CPU reference's source
+// tree). Needs dipole.glsl and kernel_window.glsl.
 
 uniform sampler2D mapPoint;
 uniform sampler2D mapPower;
 uniform sampler2D mapNormal;
+uniform sampler2D mapCovariance0;
+uniform sampler2D mapCovariance1;
 uniform int lightCount;
 uniform int levelCount[SSS_MAX_LIGHTS];
 uniform vec4 levelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
@@ -46,7 +49,10 @@ vec3 gatherB(vec3 x)
       if (level == 0 || (size < openingAngle * d && !straddlesWindow) || depth > 60)
       {
         vec3 power = texelFetch(mapPower, texel, 0).rgb;
-        sum += power * dipoleRd(point.xyz, normal.xyz, x) * kernelWindow(d);
+        vec4 c0 = texelFetch(mapCovariance0, texel, 0);
+        vec4 c1 = texelFetch(mapCovariance1, texel, 0);
+        mat3 cov = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
+        sum += power * dipoleRdSecondOrder(point.xyz, normal.xyz, cov, x) * kernelWindow(d);
         continue;
       }
       ivec2 childSize = ivec2(levelRect[base + level - 1].zw);

@@ -1,0 +1,186 @@
+// The GPU path (vtkSubsurfacePass on an EGL surfaceless context) against closed forms, the CPU
+// reference and itself: slab, caching, shifts, and bad inputs.
+#include <gtest/gtest.h>
+
+#include <vtkCamera.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderStepsPass.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "dipole.h"
+#include "error_metric.h"
+#include "fresnel.h"
+#include "gpu_scene.h"
+#include "procedural_shapes.h"
+#include "reference_renderer.h"
+
+namespace sss::test {
+namespace {
+
+bool all_finite(const std::vector<Rgb>& B) {
+  for (const Rgb& b : B)
+    for (double v : b)
+      if (!std::isfinite(v)) return false;
+  return true;
+}
+
+// Slab lit and seen straight on: Lo at the centre = Ft(0) E Ft(0) R_total / pi.
+void expect_slab(const char* name, double spacing_in_z_r) {
+  const Material material = Material::preset(name, 1.3);
+  const Dipole dipole(material);
+  double z_r = 0;
+  for (const auto& ch : dipole.channel) z_r = std::max(z_r, ch.z_r);
+  const double spacing = spacing_in_z_r * z_r;
+  const double slab_radius = dipole.max_support_radius(1e-3) + 2 * spacing;
+  SurfelCloud slab = make_slab(slab_radius, spacing);
+  slab.validate();
+  GpuScene scene(slab, material, {{Eigen::Vector3d(0, 0, 1), 2.0}});
+  const std::vector<Rgb> B = scene.render_B();
+  ASSERT_EQ(B.size(), slab.size());
+  std::size_t centre = 0;
+  for (std::size_t i = 0; i < slab.size(); ++i)
+    if (slab.positions[i].norm() < slab.positions[centre].norm()) centre = i;
+  for (int c = 0; c < 3; ++c) {
+    const double Ft0 = fresnel_transmittance(material.eta[c], 1.0);
+    const double expected = Ft0 * 2.0 * Ft0 * dipole.channel[c].total_diffuse_reflectance() / M_PI;
+    const double Lo = Ft0 * B[centre][c];
+    std::printf("[ gpu slab ] %-9s spacing %.2f z_r channel %d: Lo %.6g closed form %.6g (%+.3f %%)\n",
+                name, spacing_in_z_r, c, Lo, expected, 100 * (Lo / expected - 1));
+    EXPECT_NEAR(Lo / expected, 1.0, 0.01) << name << " channel " << c;
+  }
+}
+
+TEST(GpuSlab, CentreWithinOnePercentOfClosedForm) {
+  for (double s : {1.0, 2.0, 4.0}) {
+    expect_slab("marble", s);
+    expect_slab("ketchup", s);
+  }
+}
+
+TEST(GpuCaching, CameraOnlyChangeSkipsStepsOneAndTwo) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  GpuScene scene(sphere, Material::preset("skimmilk"), {{Eigen::Vector3d(1, 1, 1), 1.0}});
+  scene.render_B();
+  EXPECT_EQ(scene.pass->GetIlluminationRuns(), 1);
+  EXPECT_EQ(scene.pass->GetSurfelRuns(), 1);
+  scene.renderer->GetActiveCamera()->Azimuth(30);
+  scene.window->Render();
+  scene.renderer->GetActiveCamera()->Elevation(20);
+  scene.window->Render();
+  EXPECT_EQ(scene.pass->GetIlluminationRuns(), 1) << "a camera move re-ran the illumination map";
+  EXPECT_EQ(scene.pass->GetSurfelRuns(), 1);
+  EXPECT_EQ(scene.pass->GetViewRuns(), 3);
+  scene.set_lights({{Eigen::Vector3d(-1, 1, 1), 1.0}});
+  scene.window->Render();
+  EXPECT_EQ(scene.pass->GetIlluminationRuns(), 2) << "a light change must re-run steps 1-2";
+  scene.material->SetPreset("ketchup");
+  scene.window->Render();
+  EXPECT_EQ(scene.pass->GetIlluminationRuns(), 3) << "a material change must re-run steps 1-2";
+}
+
+TEST(GpuBadInput, NoLightGivesBlackNotNaN) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  GpuScene scene(sphere, Material::preset("marble"), {});
+  const std::vector<Rgb> B = scene.render_B();
+  ASSERT_EQ(B.size(), sphere.size());
+  EXPECT_TRUE(all_finite(B));
+  for (const Rgb& b : B) EXPECT_EQ(b[0] + b[1] + b[2], 0.0);
+}
+
+TEST(GpuBadInput, BackLightLightsTheFarSide) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  GpuScene scene(sphere, Material::preset("skimmilk"), {{Eigen::Vector3d(0, 0, -1), 1.0}});
+  const std::vector<Rgb> B = scene.render_B();
+  ASSERT_TRUE(all_finite(B));
+  double near_side = 0, far_side = 0;
+  for (std::size_t i = 0; i < B.size(); ++i)
+    (sphere.positions[i].z() > 0 ? near_side : far_side) += B[i][0];
+  EXPECT_GT(far_side, near_side);
+  EXPECT_GT(near_side, 0.0) << "skim milk carries light through a 20 mm sphere";
+}
+
+TEST(GpuBadInput, EmptyAndNormalFreeInputsDrawNothingAndDoNotCrash) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  GpuScene scene(sphere, Material::preset("marble"), {{Eigen::Vector3d(0, 0, 1), 1.0}});
+  vtkNew<vtkPolyData> empty;
+  scene.mapper->SetInputData(empty);
+  scene.window->Render();
+  EXPECT_EQ(scene.pass->GetLastTranslucentActors(), 0);  // VTK culls a prop with no bounds
+  vtkSmartPointer<vtkPolyData> no_normals = to_polydata(sphere, Eigen::Vector3d::Zero());
+  no_normals->GetPointData()->SetNormals(nullptr);
+  scene.mapper->SetInputData(no_normals);
+  scene.window->Render();
+  EXPECT_EQ(scene.pass->GetLastTranslucentActors(), 0);
+  EXPECT_NE(scene.mapper->GetInputProblem().find("normals"), std::string::npos);
+}
+
+TEST(GpuBadInput, NoTranslucentActorRendersAsBefore) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  GpuScene scene(sphere, Material::preset("marble"), {{Eigen::Vector3d(0, 0, 1), 1.0}});
+  vtkTranslucentMaterial::RemoveFrom(scene.actor);
+  scene.window->Render();
+  EXPECT_EQ(scene.pass->GetLastTranslucentActors(), 0);
+  EXPECT_EQ(scene.pass->GetIlluminationRuns(), 0);
+  EXPECT_GT(scene.pass->GetNumberOfRenderedProps(), 0);
+}
+
+TEST(GpuBadInput, ResizeAndPassRemovedAndAddedAgain) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  GpuScene scene(sphere, Material::preset("marble"), {{Eigen::Vector3d(0, 0, 1), 1.0}});
+  const std::vector<Rgb> before = scene.render_B();
+  scene.window->SetSize(320, 200);
+  scene.window->Render();
+  vtkNew<vtkRenderStepsPass> plain;
+  scene.renderer->SetPass(plain);
+  scene.window->Render();
+  scene.renderer->SetPass(scene.pass);
+  const std::vector<Rgb> after = scene.render_B();
+  ASSERT_EQ(before.size(), after.size());
+  for (std::size_t i = 0; i < before.size(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(before[i][c], after[i][c]);
+}
+
+long resident_kib() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  long value = 0;
+  while (status >> key) {
+    if (key == "VmRSS:") {
+      status >> value;
+      return value;
+    }
+  }
+  return 0;
+}
+
+TEST(GpuBadInput, ThousandFramesWithAMovingLightDoNotGrowMemory) {
+  SurfelCloud sphere = make_sphere(10.0, 1.0);
+  sphere.validate();
+  GpuScene scene(sphere, Material::preset("ketchup"), {{Eigen::Vector3d(0, 0, 1), 1.0}}, 
+                 Eigen::Vector3d(0, 0, 1), 128);
+  long after_warmup = 0;
+  for (int frame = 0; frame < 1000; ++frame) {
+    const double a = 0.01 * frame;
+    scene.set_lights({{Eigen::Vector3d(std::cos(a), std::sin(a), 0.5), 1.0}});
+    scene.window->Render();
+    if (frame == 99) after_warmup = resident_kib();
+  }
+  const long growth = resident_kib() - after_warmup;
+  std::printf("[ gpu frames ] resident memory growth over frames 100-1000: %ld KiB\n", growth);
+  EXPECT_EQ(scene.pass->GetIlluminationRuns(), 1000);
+  EXPECT_LT(growth, 16 * 1024) << "GL resources leak with a moving light";
+}
+
+}  // namespace
+}  // namespace sss::test
