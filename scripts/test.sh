@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Set-up, build, and every test: the release suite (core, hard cases, shared scans), then the
+# Set-up, build, and every test: the release suite (core, hard cases, the GPU path on EGL and
+# OSMesa with DISPLAY unset, shared scans), then the
 # core tests again built with AddressSanitizer and UndefinedBehaviorSanitizer. The slab
 # accuracy sweep, the no-absorption and index-one slabs and the units test (millions of
 # sources, the same code paths as the smaller tests) run in the release suite only: under the sanitizers they take too long.
