@@ -84,6 +84,9 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
                             the brightest point's Lo maps to white)
+  --frames N                after the outputs, time N frames with the camera orbiting (light
+                            static), N with the light moving, and N of plain VTK points
+                            (vertex cells, point size 2) of the same cloud (default 0)
   --help                    this text
 )";
 }
@@ -167,6 +170,11 @@ Options parse(int argc, char** argv) {
       o.opening_angle = number(flag, value());
       if (o.opening_angle < 0.05 || o.opening_angle > 2.0)
         throw std::invalid_argument("--opening-angle: needs a value from 0.05 to 2");
+    } else if (flag == "--frames") {
+      const double n = number(flag, value());
+      if (n < 0 || n > 100000 || n != std::floor(n))
+        throw std::invalid_argument("--frames: needs a whole number from 0 to 100000");
+      o.frames = static_cast<int>(n);
     } else if (flag == "--exposure") {
       o.exposure = number(flag, value());
       if (o.exposure < 0) throw std::invalid_argument("--exposure: must be >= 0");

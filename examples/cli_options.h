@@ -32,6 +32,7 @@ struct Options {
   double opening_angle = 0.5;
   double exposure = 0.0;  // 0: automatic
   double texel_per_z_r = 0.25;
+  int frames = 0;
   bool help = false;
 };
 

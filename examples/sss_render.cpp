@@ -10,6 +10,10 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkVertexGlyphFilter.h>
+#include <vtkLightCollection.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSubsurfacePass.h>
@@ -55,7 +59,52 @@ std::string json_rgb(const sss::Rgb& v) { return json_vector(Eigen::Vector3d(v[0
 
 struct Timings {
   double load = 0, reference = 0, first_frame = 0, camera_frame = 0;
+  double light_static = 0, light_moving = 0, plain_points = 0;  // mean seconds per frame
 };
+
+// Mean frame times: camera orbiting (light static), light moving, and plain VTK points of
+// the same cloud in the same window.
+void time_frames(int frames, vtkRenderWindow* window, vtkRenderer* renderer,
+                 vtkPolyData* polydata, Timings& t) {
+  sss::Stopwatch clock;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  for (int i = 0; i < frames; ++i) {
+    camera->Azimuth(360.0 / frames);
+    window->Render();
+  }
+  t.light_static = clock.lap() / frames;
+  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+  double p[3];
+  light->GetPosition(p);
+  for (int i = 0; i < frames; ++i) {
+    const double a = 2.0 * M_PI * (i + 1) / frames;
+    light->SetPosition(p[0] * std::cos(a) - p[1] * std::sin(a),
+                       p[0] * std::sin(a) + p[1] * std::cos(a), p[2]);
+    window->Render();
+  }
+  t.light_moving = clock.lap() / frames;
+  vtkNew<vtkRenderer> plain;
+  plain->SetActiveCamera(camera);
+  vtkNew<vtkVertexGlyphFilter> vertices;
+  vertices->SetInputData(polydata);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(vertices->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetPointSize(2);
+  plain->AddActor(actor);
+  window->RemoveRenderer(renderer);
+  window->AddRenderer(plain);
+  window->Render();  // upload outside the timing
+  clock.lap();
+  for (int i = 0; i < frames; ++i) {
+    camera->Azimuth(360.0 / frames);
+    window->Render();
+  }
+  t.plain_points = clock.lap() / frames;
+  window->RemoveRenderer(plain);
+  window->AddRenderer(renderer);
+}
 
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
                  vtkSubsurfacePass* pass, const Timings& t, const std::string& path) {
@@ -99,7 +148,11 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"virtual_points\": " << pass->GetLastVirtualPointSeconds()
         << ", \"surfels\": " << pass->GetLastSurfelSeconds()
         << ", \"first_frame\": " << t.first_frame
-        << ", \"camera_only_frame\": " << t.camera_frame << "}\n}\n";
+        << ", \"camera_only_frame\": " << t.camera_frame << "},\n"
+        << "  \"frames\": {\"count\": " << o.frames
+        << ", \"light_static_seconds\": " << t.light_static
+        << ", \"light_moving_seconds\": " << t.light_moving
+        << ", \"plain_vtk_points_seconds\": " << t.plain_points << "}\n}\n";
     if (!out.flush()) throw std::runtime_error("cannot write " + partial);
   }
   if (std::rename(partial.c_str(), path.c_str()) != 0) {
@@ -269,6 +322,15 @@ int run(const Options& o) {
                     B->GetValue(static_cast<vtkIdType>(3 * i + ch));
     }
     sss::cli::write_baked_ply(cloud.positions, Lo, o.bake_ply);
+  }
+  if (o.frames > 0) {
+    time_frames(o.frames, window, renderer, polydata, timings);
+    std::fprintf(stderr,
+                 "frames: light static %.4f s, light moving %.4f s, plain VTK points %.4f s "
+                 "(ratios %.2f and %.2f)\n",
+                 timings.light_static, timings.light_moving, timings.plain_points,
+                 timings.light_static / timings.plain_points,
+                 timings.light_moving / timings.plain_points);
   }
   if (!o.stats_json.empty()) write_stats(o, material, cloud, pass, timings, o.stats_json);
   std::fprintf(stderr, "wrote %s (first frame %.3f s, camera-only frame %.3f s)\n",
