@@ -83,7 +83,7 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --opening-angle V         pyramid walk accuracy, smaller is finer (default 0.5)
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
-                            the brightest point's Lo maps to white)
+                            the 99.5th percentile of the visible Lo maps to white)
   --frames N                after the outputs, time N frames with the camera orbiting (light
                             static), N with the light moving, and N of plain VTK points
                             (vertex cells, point size 2) of the same cloud (default 0)

@@ -244,7 +244,7 @@ int run(const Options& o) {
   pass->SetOpeningAngle(o.opening_angle);
   pass->SetTexelPerZr(o.texel_per_z_r);
   pass->SetExposure(o.exposure);
-  pass->SetCaptureLinearImage(!o.linear_pfm.empty());
+  pass->SetCaptureLinearImage(!o.linear_pfm.empty() || o.exposure == 0.0);
   pass->MeasureStepTimesOn();
   renderer->SetPass(pass);
 
@@ -281,11 +281,20 @@ int run(const Options& o) {
     throw std::runtime_error("the cloud could not be rendered translucent (see the errors above)");
   vtkNew<vtkFloatArray> B;
   if (!pass->GetSurfelRadiance(actor, B)) throw std::runtime_error("no radiance was computed");
-  if (o.exposure == 0.0) {  // automatic: the brightest surfel's B at normal exit maps to white
-    double brightest = 0.0;
-    for (vtkIdType i = 0; i < B->GetNumberOfValues(); ++i)
-      if (std::isfinite(B->GetValue(i))) brightest = std::max<double>(brightest, B->GetValue(i));
-    const double white = brightest * sss::fresnel_transmittance(material.eta[0], 1.0);
+  if (o.exposure == 0.0) {  // automatic: the 99.5th percentile of the visible Lo maps to white
+    std::vector<float> visible;
+    vtkFloatArray* linear = pass->GetLinearImage();
+    for (vtkIdType p = 0; p < linear->GetNumberOfTuples(); ++p) {
+      const float m = std::max({linear->GetValue(3 * p), linear->GetValue(3 * p + 1),
+                                linear->GetValue(3 * p + 2)});
+      if (m > 0.0f) visible.push_back(m);
+    }
+    double white = 0.0;
+    if (!visible.empty()) {
+      auto at = visible.begin() + static_cast<std::ptrdiff_t>(0.995 * (visible.size() - 1));
+      std::nth_element(visible.begin(), at, visible.end());
+      white = *at;
+    }
     pass->SetExposure(white > 0.0 ? 1.0 / white : 1.0);
   }
   camera->Modified();  // a camera-only change: step 3 alone
