@@ -1,5 +1,6 @@
 #include "sssTranslucentActorState.h"
 
+#include "sssGpuHelpers.h"
 #include "sssPaperTaps.h"
 #include "sss_dipole.h"
 #include "sss_gather_paper.h"
@@ -52,21 +53,6 @@ struct LevelRect
   int x, y, width, height;
 };
 
-vtkSmartPointer<vtkTextureObject> FloatTexture2D(vtkOpenGLRenderWindow* window, int w, int h)
-{
-  auto tex = vtkSmartPointer<vtkTextureObject>::New();
-  tex->SetContext(window);
-  tex->SetInternalFormat(GL_RGBA32F);
-  tex->SetFormat(GL_RGBA);
-  tex->SetDataType(GL_FLOAT);
-  tex->SetMinificationFilter(vtkTextureObject::Nearest);
-  tex->SetMagnificationFilter(vtkTextureObject::Nearest);
-  tex->SetWrapS(vtkTextureObject::ClampToEdge);
-  tex->SetWrapT(vtkTextureObject::ClampToEdge);
-  tex->Allocate2D(w, h, 4, VTK_FLOAT);
-  return tex;
-}
-
 std::string WithPieces(std::string source, const std::string& gather)
 {
   vtkShaderProgram::Substitute(source, "//SSS::Gather::Dec", gather, true);
@@ -109,6 +95,18 @@ struct ProgramVAO
   vtkNew<vtkOpenGLVertexArrayObject> vao;
   vtkShaderProgram* program = nullptr;
   bool needs(vtkShaderProgram* p) const { return p != program; }
+  // Binds the VAO with one vec3 attribute, re-linked when the program changed.
+  void bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name)
+  {
+    vao->Bind();
+    if (needs(p))
+    {
+      vao->ReleaseGraphicsResources();
+      vao->Bind();
+      vao->AddAttributeArray(p, buffer, name, 0, 12, VTK_FLOAT, 3, false);
+      program = p;
+    }
+  }
 };
 }
 
@@ -311,7 +309,7 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
 
   list_width_ = kListWidth;
   g.list_height = static_cast<int>((n + kListWidth - 1) / kListWidth);
-  g.list = FloatTexture2D(window, list_width_, std::max(1, g.list_height));
+  g.list = float_texture_2d(window, list_width_, std::max(1, g.list_height));
 
   g.grid.reset();
   g.grid_radiance = nullptr;
@@ -505,11 +503,11 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   }
   if (atlas_w != g.atlas_width || atlas_h != g.atlas_height || !g.atlas_point)
   {
-    g.atlas_point = FloatTexture2D(window, atlas_w, atlas_h);
-    g.atlas_power = FloatTexture2D(window, atlas_w, atlas_h);
-    g.atlas_normal = FloatTexture2D(window, atlas_w, atlas_h);
-    g.atlas_cov0 = FloatTexture2D(window, atlas_w, atlas_h);
-    g.atlas_cov1 = FloatTexture2D(window, atlas_w, atlas_h);
+    g.atlas_point = float_texture_2d(window, atlas_w, atlas_h);
+    g.atlas_power = float_texture_2d(window, atlas_w, atlas_h);
+    g.atlas_normal = float_texture_2d(window, atlas_w, atlas_h);
+    g.atlas_cov0 = float_texture_2d(window, atlas_w, atlas_h);
+    g.atlas_cov1 = float_texture_2d(window, atlas_w, atlas_h);
     g.atlas_depth = vtkSmartPointer<vtkTextureObject>::New();
     g.atlas_depth->SetContext(window);
     g.atlas_depth->AllocateDepth(atlas_w, atlas_h, vtkTextureObject::Float32);
@@ -619,15 +617,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   // The pyramid: each level from the one below, in the same atlas (disjoint texels, with a
   // texture barrier between levels).
   state->vtkglDisable(GL_DEPTH_TEST);
-  if (!g.reduce)
-  {
-    g.reduce = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr, sss_pyramid_reduce_fs, "");
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(g.reduce->Program);
-  }
-  vtkShaderProgram* reduce = g.reduce->Program;
+  vtkShaderProgram* reduce = ready_quad(g.reduce, window, sss_pyramid_reduce_fs);
   if (!reduce)
   {
     error = "the pyramid shader did not compile";
@@ -689,25 +679,10 @@ bool TranslucentActorState::run_virtual_points(
     return false;
   }
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewport(state);
-  vtkOpenGLState::ScopedglEnableDisable depth_test(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable point_size(state, GL_PROGRAM_POINT_SIZE);
-  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  glEnable(GL_PROGRAM_POINT_SIZE);
+  PointPassState point_pass(state);
 
   ProgramVAO& pv = g.grid_vao;
-  pv.vao->Bind();
-  if (pv.needs(program))
-  {
-    pv.vao->ReleaseGraphicsResources();
-    pv.vao->Bind();
-    pv.vao->AddAttributeArray(program, g.grid_index, "gridIndex", 0, 12, VTK_FLOAT, 3, false);
-    pv.program = program;
-  }
+  pv.bind(program, g.grid_index, "gridIndex");
   g.activate_maps();
   const bool split = settings.strategy == KernelStrategy::GridNear;
   const double r0 = settings.near_field_cells * grid.spacing();
@@ -757,25 +732,10 @@ bool TranslucentActorState::run_surfels(
     return false;
   }
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewport(state);
-  vtkOpenGLState::ScopedglEnableDisable depth_test(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable point_size(state, GL_PROGRAM_POINT_SIZE);
-  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  glEnable(GL_PROGRAM_POINT_SIZE);
+  PointPassState point_pass(state);
 
   ProgramVAO& pv = g.resolve_vao;
-  pv.vao->Bind();
-  if (pv.needs(program))
-  {
-    pv.vao->ReleaseGraphicsResources();
-    pv.vao->Bind();
-    pv.vao->AddAttributeArray(program, g.points, "pointLocal", 0, 12, VTK_FLOAT, 3, false);
-    pv.program = program;
-  }
+  pv.bind(program, g.points, "pointLocal");
   g.activate_maps();
   const bool use_grid = static_cast<bool>(g.grid);
   const bool near_only = settings.strategy == KernelStrategy::GridNear;
@@ -851,7 +811,7 @@ bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,
       texels[4 * i + c] = static_cast<float>(B[i][c]);
     }
   }
-  g.list = FloatTexture2D(window, list_width_, std::max(1, g.list_height));
+  g.list = float_texture_2d(window, list_width_, std::max(1, g.list_height));
   g.list->Create2DFromRaw(list_width_, std::max(1, g.list_height), 4, VTK_FLOAT, texels.data());
   valid_ = true;
   geometry_time_ = 0;  // the next update() runs every step

@@ -1,5 +1,6 @@
 #include "vtkSubsurfacePass.h"
 
+#include "sssGpuHelpers.h"
 #include "sssTranslucentActorState.h"
 #include "sss_composite_fs.h"
 #include "sss_dipole.h"
@@ -93,18 +94,6 @@ sss::Material CoreMaterial(vtkTranslucentMaterial* m)
   return material;
 }
 
-vtkTextureObject* FloatTexture(vtkOpenGLRenderWindow* window, int w, int h)
-{
-  vtkTextureObject* tex = vtkTextureObject::New();
-  tex->SetContext(window);
-  tex->SetInternalFormat(GL_RGBA32F);
-  tex->SetFormat(GL_RGBA);
-  tex->SetDataType(GL_FLOAT);
-  tex->SetMinificationFilter(vtkTextureObject::Nearest);
-  tex->SetMagnificationFilter(vtkTextureObject::Nearest);
-  tex->Allocate2D(w, h, 4, VTK_FLOAT);
-  return tex;
-}
 }
 
 void vtkSubsurfacePass::Render(const vtkRenderState* s)
@@ -329,7 +318,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
       impl.Colour->ReleaseGraphicsResources(window);
       impl.Depth->ReleaseGraphicsResources(window);
     }
-    impl.Colour.TakeReference(FloatTexture(window, width, height));
+    impl.Colour = sss::float_texture_2d(window, width, height);
     impl.Depth = vtkSmartPointer<vtkTextureObject>::New();
     impl.Depth->SetContext(window);
     impl.Depth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -385,15 +374,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   state->PopFramebufferBindings();
 
   // Composite into the output, with depth, tone mapping translucent pixels.
-  if (!impl.Composite)
-  {
-    impl.Composite = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr, sss_composite_fs, "");
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(impl.Composite->Program);
-  }
-  vtkShaderProgram* composite = impl.Composite->Program;
+  vtkShaderProgram* composite = sss::ready_quad(impl.Composite, window, sss_composite_fs);
   if (!composite)
   {
     vtkErrorMacro(<< "the composite shader did not compile");
