@@ -95,58 +95,16 @@ vtkStandardNewMacro(vtkEGLSurfacelessRenderWindow);
 //------------------------------------------------------------------------------
 vtkEGLSurfacelessRenderWindow::vtkEGLSurfacelessRenderWindow()
   : Display(nullptr)
-  , Context(nullptr)
-  , ContextAttempted(false)
-  , ContextValid(false)
   , SurfacelessPlatform(false)
-  , ContextMajor(0)
-  , ContextMinor(0)
 {
-  // There is no window system surface: render into VTK's framebuffer
-  // objects and never blit to (non-existent) framebuffer 0.
-  this->SetOffScreenRendering(1);
-  this->Mapped = 1;
-  this->FrameBlitMode = vtkOpenGLRenderWindow::NoBlit;
-  this->Size[0] = 300;
-  this->Size[1] = 300;
   this->SetWindowName("vtkEGLSurfacelessRenderWindow");
 }
 
 //------------------------------------------------------------------------------
 vtkEGLSurfacelessRenderWindow::~vtkEGLSurfacelessRenderWindow()
 {
-  // The base destructor only reaches the base Finalize(); release our GL
-  // objects while our context still exists, then destroy it.
+  // Release our GL objects and the context while the hooks still exist.
   this->Finalize();
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::Fail(const std::string& why)
-{
-  // Report each distinct failure once so that a broken setup does not flood
-  // the log on every frame.
-  if (why != this->LastError)
-  {
-    this->LastError = why;
-    vtkErrorMacro(<< why);
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkEGLSurfacelessRenderWindow::EnsureContext()
-{
-  if (!this->ContextValid && !this->ContextAttempted)
-  {
-    this->ContextAttempted = true;
-    this->CreateContext();
-  }
-  return this->ContextValid;
-}
-
-//------------------------------------------------------------------------------
-bool vtkEGLSurfacelessRenderWindow::IsContextValid()
-{
-  return this->EnsureContext();
 }
 
 //------------------------------------------------------------------------------
@@ -300,117 +258,21 @@ bool vtkEGLSurfacelessRenderWindow::CreateContext()
   this->Context = ctx;
   this->ContextMajor = major;
   this->ContextMinor = minor;
-  this->ContextValid = true;
-  this->LastError.clear();
-  // A fresh context: VTK must run glewInit/state setup again.
-  this->Initialized = false;
-  this->ContextCreationTime.Modified();
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkEGLSurfacelessRenderWindow::DestroyContext()
 {
-  if (this->Context)
-  {
-    EGLDisplay dpy = static_cast<EGLDisplay>(this->Display);
-    if (eglGetCurrentContext() == static_cast<EGLContext>(this->Context))
-    {
-      eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    }
-    if (vtkHeadlessGL::CurrentOwner() == this)
-    {
-      vtkHeadlessGL::CurrentOwner() = nullptr;
-    }
-    eglDestroyContext(dpy, static_cast<EGLContext>(this->Context));
-    ReleaseDisplay(dpy);
-  }
-  this->Context = nullptr;
+  EGLDisplay dpy = static_cast<EGLDisplay>(this->Display);
+  eglDestroyContext(dpy, static_cast<EGLContext>(this->Context));
+  ReleaseDisplay(dpy);
   this->Display = nullptr;
-  this->ContextValid = false;
-  this->ContextAttempted = false;
-  this->Initialized = false;
 }
 
 //------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::Initialize()
+bool vtkEGLSurfacelessRenderWindow::MakeContextCurrent()
 {
-  // An explicit Initialize() retries after an earlier failure.
-  if (!this->ContextValid)
-  {
-    this->ContextAttempted = false;
-  }
-  if (!this->EnsureContext())
-  {
-    return;
-  }
-  this->MakeCurrent();
-  if (!this->Initialized)
-  {
-    this->OpenGLInit();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::OpenGLInit()
-{
-  if (!this->EnsureContext())
-  {
-    return;
-  }
-  this->MakeCurrent();
-  this->OpenGLInitContext();
-  if (!this->Initialized)
-  {
-    return; // reported; never run VTK's state setup without GL entry points
-  }
-  // vtkGenericOpenGLRenderWindow -> vtkOpenGLRenderWindow::OpenGLInit():
-  // OpenGLInitContext() (now a no-op) + OpenGLInitState() + glFlush().
-  this->Superclass::OpenGLInit();
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::OpenGLInitContext()
-{
-  if (!this->Initialized && this->ContextValid)
-  {
-    const std::string why = vtkHeadlessGL::InitGlewWithoutGLX();
-    if (!why.empty())
-    {
-      this->GlewInitValid = false;
-      this->Fail(why);
-      return;
-    }
-    this->GlewInitValid = true;
-    this->Initialized = true;
-    this->MaximumHardwareLineWidth =
-      vtkHeadlessGL::QueryMaximumHardwareLineWidth(this->LineSmoothing != 0);
-  }
-  this->Superclass::OpenGLInitContext();
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::Finalize()
-{
-  if (this->ContextValid)
-  {
-    this->MakeCurrent();
-    if (this->IsCurrent())
-    {
-      // release renderers, shader cache, framebuffers, ... in our context
-      this->Superclass::Finalize();
-    }
-  }
-  this->DestroyContext();
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::MakeCurrent()
-{
-  if (!this->EnsureContext())
-  {
-    return;
-  }
   if (eglQueryAPI() != EGL_OPENGL_API)
   {
     eglBindAPI(EGL_OPENGL_API);
@@ -421,7 +283,7 @@ void vtkEGLSurfacelessRenderWindow::MakeCurrent()
   {
     if (vtkHeadlessGL::CurrentOwner() == this)
     {
-      return;
+      return true;
     }
     // EGL still reports our context while another context (e.g. OSMesa in
     // the same thread) took over Mesa's GL dispatch: bind again for real.
@@ -431,18 +293,21 @@ void vtkEGLSurfacelessRenderWindow::MakeCurrent()
   {
     this->Fail("eglMakeCurrent failed: " + EGLErrorText() +
       " (is the context current in another thread?)");
-    return;
+    return false;
   }
-  vtkHeadlessGL::CurrentOwner() = this;
+  return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkEGLSurfacelessRenderWindow::IsCurrent()
+void vtkEGLSurfacelessRenderWindow::ReleaseContext()
 {
-  if (!this->ContextValid || vtkHeadlessGL::CurrentOwner() != this)
-  {
-    return false;
-  }
+  eglMakeCurrent(
+    static_cast<EGLDisplay>(this->Display), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+}
+
+//------------------------------------------------------------------------------
+bool vtkEGLSurfacelessRenderWindow::IsContextCurrent()
+{
   if (eglQueryAPI() != EGL_OPENGL_API)
   {
     eglBindAPI(EGL_OPENGL_API);
@@ -451,50 +316,8 @@ bool vtkEGLSurfacelessRenderWindow::IsCurrent()
 }
 
 //------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::ReleaseCurrent()
+bool vtkEGLSurfacelessRenderWindow::ReportContext(std::ostream& s)
 {
-  if (this->IsCurrent())
-  {
-    eglMakeCurrent(
-      static_cast<EGLDisplay>(this->Display), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    vtkHeadlessGL::CurrentOwner() = nullptr;
-  }
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkEGLSurfacelessRenderWindow::IsDirect()
-{
-  return this->ContextValid ? 1 : 0;
-}
-
-//------------------------------------------------------------------------------
-int vtkEGLSurfacelessRenderWindow::SupportsOpenGL()
-{
-  this->OpenGLSupportTested = true;
-  if (!this->EnsureContext())
-  {
-    this->OpenGLSupportResult = 0;
-    this->OpenGLSupportMessage = "No EGL OpenGL context: " + this->LastError;
-    return 0;
-  }
-  // CreateContext() already rejected anything below core 3.2.
-  this->OpenGLSupportResult = 1;
-  this->OpenGLSupportMessage = "EGL OpenGL core " + std::to_string(this->ContextMajor) + "." +
-    std::to_string(this->ContextMinor) + " context available.";
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-const char* vtkEGLSurfacelessRenderWindow::ReportCapabilities()
-{
-  std::ostringstream s;
-  if (!this->EnsureContext())
-  {
-    s << "vtkEGLSurfacelessRenderWindow: no context (" << this->LastError << ")\n";
-    this->CapabilitiesReport = s.str();
-    return this->CapabilitiesReport.c_str();
-  }
-  this->Initialize(); // makes current and runs VTK's GL init once
   EGLDisplay dpy = static_cast<EGLDisplay>(this->Display);
   s << "EGL platform:  "
     << (this->SurfacelessPlatform ? "surfaceless (EGL_PLATFORM_SURFACELESS_MESA)"
@@ -504,61 +327,7 @@ const char* vtkEGLSurfacelessRenderWindow::ReportCapabilities()
   s << "EGL vendor:  " << eglQueryString(dpy, EGL_VENDOR) << "\n";
   s << "OpenGL context:  core profile " << this->ContextMajor << "." << this->ContextMinor
     << ", no default framebuffer\n";
-  const char* gl = this->Superclass::ReportCapabilities();
-  s << (gl ? gl : "");
-  this->CapabilitiesReport = s.str();
-  return this->CapabilitiesReport.c_str();
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::Start()
-{
-  this->Initialize();
-  if (this->ContextValid && this->Initialized)
-  {
-    this->Superclass::Start();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::Render()
-{
-  if (!this->EnsureContext())
-  {
-    return; // the failure has been reported once; rendering is a no-op
-  }
-  this->Initialize();
-  if (this->Initialized)
-  {
-    this->Superclass::Render();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkEGLSurfacelessRenderWindow::Frame()
-{
-  if (this->ContextValid && this->Initialized)
-  {
-    this->Superclass::Frame();
-  }
-}
-
-//------------------------------------------------------------------------------
-int vtkEGLSurfacelessRenderWindow::ReadPixels(
-  const vtkRecti& rect, int front, int glFormat, int glType, void* data, int right)
-{
-  if (!this->EnsureContext() || !this->Initialized)
-  {
-    return VTK_ERROR;
-  }
-  this->MakeCurrent();
-  return this->Superclass::ReadPixels(rect, front, glFormat, glType, data, right);
-}
-
-//------------------------------------------------------------------------------
-void* vtkEGLSurfacelessRenderWindow::GetGenericContext()
-{
-  return this->Context;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -571,11 +340,6 @@ void* vtkEGLSurfacelessRenderWindow::GetGenericDisplayId()
 void vtkEGLSurfacelessRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ContextValid: " << this->ContextValid << "\n";
   os << indent << "SurfacelessPlatform: " << this->SurfacelessPlatform << "\n";
-  os << indent << "ContextVersion: " << this->ContextMajor << "." << this->ContextMinor << "\n";
   os << indent << "Display: " << this->Display << "\n";
-  os << indent << "Context: " << this->Context << "\n";
-  os << indent << "LastError: " << (this->LastError.empty() ? "(none)" : this->LastError)
-     << "\n";
 }

@@ -1,6 +1,6 @@
 /**
- * Private helpers shared by vtkEGLSurfacelessRenderWindow and
- * vtkOSMesaRenderWindow. Not installed, not part of the public API.
+ * Private helpers of vtkHeadlessRenderWindow and its EGL and OSMesa
+ * subclasses. Not installed, not part of the public API.
  */
 #ifndef vtkHeadlessGLInternals_h
 #define vtkHeadlessGLInternals_h

@@ -24,7 +24,6 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 
 #ifndef SSS_OSMESA_SONAME
 #define SSS_OSMESA_SONAME "libOSMesa.so.8"
@@ -352,58 +351,18 @@ bool vtkOSMesaRenderWindow::EnsureProcessIsOSMesaReady(int argc, char** argv, st
 // Window
 //------------------------------------------------------------------------------
 vtkOSMesaRenderWindow::vtkOSMesaRenderWindow()
-  : Context(nullptr)
-  , BufferType(GL_UNSIGNED_BYTE)
+  : BufferType(GL_UNSIGNED_BYTE)
   , UseFloatBuffer(false)
-  , ContextAttempted(false)
-  , ContextValid(false)
-  , ContextMajor(0)
-  , ContextMinor(0)
 {
   this->BufferSize[0] = this->BufferSize[1] = 0;
-  // VTK renders into its own framebuffer objects; the OSMesa buffer is the
-  // (single-buffered) default framebuffer and is never blitted to.
-  this->SetOffScreenRendering(1);
-  this->Mapped = 1;
-  this->FrameBlitMode = vtkOpenGLRenderWindow::NoBlit;
-  this->Size[0] = 300;
-  this->Size[1] = 300;
   this->SetWindowName("vtkOSMesaRenderWindow");
 }
 
 //------------------------------------------------------------------------------
 vtkOSMesaRenderWindow::~vtkOSMesaRenderWindow()
 {
-  // The base destructor only reaches the base Finalize(); release our GL
-  // objects while our context still exists, then destroy it.
+  // Release our GL objects and the context while the hooks still exist.
   this->Finalize();
-}
-
-//------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::Fail(const std::string& why)
-{
-  if (why != this->LastError)
-  {
-    this->LastError = why;
-    vtkErrorMacro(<< why);
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkOSMesaRenderWindow::EnsureContext()
-{
-  if (!this->ContextValid && !this->ContextAttempted)
-  {
-    this->ContextAttempted = true;
-    this->CreateContext();
-  }
-  return this->ContextValid;
-}
-
-//------------------------------------------------------------------------------
-bool vtkOSMesaRenderWindow::IsContextValid()
-{
-  return this->EnsureContext();
 }
 
 //------------------------------------------------------------------------------
@@ -440,7 +399,6 @@ bool vtkOSMesaRenderWindow::BindBuffer()
       return false;
     }
   }
-  vtkHeadlessGL::CurrentOwner() = this;
   return true;
 }
 
@@ -490,6 +448,7 @@ bool vtkOSMesaRenderWindow::CreateContext()
     this->Context = nullptr;
     return false;
   }
+  vtkHeadlessGL::CurrentOwner() = this;
 
   const GLubyte* version = glGetString(GL_VERSION);
   GLint major = 0, minor = 0;
@@ -519,253 +478,60 @@ bool vtkOSMesaRenderWindow::CreateContext()
 
   this->ContextMajor = major;
   this->ContextMinor = minor;
-  this->ContextValid = true;
-  this->LastError.clear();
-  this->Initialized = false; // fresh context: VTK's GL init must run again
-  this->ContextCreationTime.Modified();
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkOSMesaRenderWindow::DestroyContext()
 {
-  if (this->Context)
-  {
-    const OSMesaAPI& api = GetOSMesaAPI();
-    OSMesaContext ctx = static_cast<OSMesaContext>(this->Context);
-    if (api.GetCurrentContext() == ctx)
-    {
-      api.MakeCurrent(nullptr, nullptr, 0, 0, 0);
-    }
-    if (vtkHeadlessGL::CurrentOwner() == this)
-    {
-      vtkHeadlessGL::CurrentOwner() = nullptr;
-    }
-    api.DestroyContext(ctx);
-  }
-  this->Context = nullptr;
+  GetOSMesaAPI().DestroyContext(static_cast<OSMesaContext>(this->Context));
   std::vector<unsigned char>().swap(this->Buffer);
   this->BufferSize[0] = this->BufferSize[1] = 0;
-  this->ContextValid = false;
-  this->ContextAttempted = false;
-  this->Initialized = false;
 }
 
 //------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::Initialize()
+bool vtkOSMesaRenderWindow::MakeContextCurrent()
 {
-  if (!this->ContextValid)
-  {
-    this->ContextAttempted = false; // an explicit Initialize() retries
-  }
-  if (!this->EnsureContext())
-  {
-    return;
-  }
-  this->MakeCurrent();
-  if (!this->Initialized)
-  {
-    this->OpenGLInit();
-  }
+  return this->BindBuffer();
 }
 
 //------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::OpenGLInit()
+void vtkOSMesaRenderWindow::ReleaseContext()
 {
-  if (!this->EnsureContext())
-  {
-    return;
-  }
-  this->MakeCurrent();
-  this->OpenGLInitContext();
-  if (!this->Initialized)
-  {
-    return; // reported; never run VTK's state setup without GL entry points
-  }
-  this->Superclass::OpenGLInit();
+  GetOSMesaAPI().MakeCurrent(nullptr, nullptr, 0, 0, 0);
 }
 
 //------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::OpenGLInitContext()
+bool vtkOSMesaRenderWindow::IsContextCurrent()
 {
-  if (!this->Initialized && this->ContextValid)
-  {
-    const std::string why = vtkHeadlessGL::InitGlewWithoutGLX();
-    if (!why.empty())
-    {
-      this->GlewInitValid = false;
-      this->Fail(why);
-      return;
-    }
-    this->GlewInitValid = true;
-    this->Initialized = true;
-    this->MaximumHardwareLineWidth =
-      vtkHeadlessGL::QueryMaximumHardwareLineWidth(this->LineSmoothing != 0);
-  }
-  this->Superclass::OpenGLInitContext();
+  return GetOSMesaAPI().GetCurrentContext() == static_cast<OSMesaContext>(this->Context);
 }
 
 //------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::Finalize()
+void vtkOSMesaRenderWindow::ResizeDrawable()
 {
-  if (this->ContextValid)
-  {
-    this->MakeCurrent();
-    if (this->IsCurrent())
-    {
-      this->Superclass::Finalize(); // releases renderers, caches, framebuffers
-    }
-  }
-  this->DestroyContext();
+  this->BindBuffer(); // reallocates to the new size and rebinds
 }
 
 //------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::MakeCurrent()
+bool vtkOSMesaRenderWindow::ReportContext(std::ostream& s)
 {
-  if (this->EnsureContext())
-  {
-    this->BindBuffer();
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkOSMesaRenderWindow::IsCurrent()
-{
-  return this->ContextValid &&
-    GetOSMesaAPI().GetCurrentContext() == static_cast<OSMesaContext>(this->Context) &&
-    vtkHeadlessGL::CurrentOwner() == this;
-}
-
-//------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::ReleaseCurrent()
-{
-  if (this->IsCurrent())
-  {
-    GetOSMesaAPI().MakeCurrent(nullptr, nullptr, 0, 0, 0);
-    vtkHeadlessGL::CurrentOwner() = nullptr;
-  }
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkOSMesaRenderWindow::IsDirect()
-{
-  return this->ContextValid ? 1 : 0;
-}
-
-//------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::SetSize(int width, int height)
-{
-  this->Superclass::SetSize(width, height);
-  if (this->ContextValid && this->IsCurrent())
-  {
-    this->BindBuffer(); // reallocates to the new size and rebinds
-  }
-  // otherwise the buffer follows at the next MakeCurrent()
-}
-
-//------------------------------------------------------------------------------
-int vtkOSMesaRenderWindow::SupportsOpenGL()
-{
-  this->OpenGLSupportTested = true;
-  if (!this->EnsureContext())
-  {
-    this->OpenGLSupportResult = 0;
-    this->OpenGLSupportMessage = "No OSMesa OpenGL context: " + this->LastError;
-    return 0;
-  }
-  this->OpenGLSupportResult = 1;
-  this->OpenGLSupportMessage = "OSMesa OpenGL core " + std::to_string(this->ContextMajor) + "." +
-    std::to_string(this->ContextMinor) + " context available.";
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-const char* vtkOSMesaRenderWindow::ReportCapabilities()
-{
-  std::ostringstream s;
-  if (!this->EnsureContext())
-  {
-    s << "vtkOSMesaRenderWindow: no context (" << this->LastError << ")\n";
-    this->CapabilitiesReport = s.str();
-    return this->CapabilitiesReport.c_str();
-  }
-  this->Initialize();
   if (!this->Initialized)
   {
     s << "vtkOSMesaRenderWindow: GL initialization failed (" << this->LastError << ")\n";
-    this->CapabilitiesReport = s.str();
-    return this->CapabilitiesReport.c_str();
+    return false;
   }
   s << "OSMesa library:  " << vtkOSMesaRenderWindow::FindOSMesaLibrary() << "\n";
   s << "OSMesa buffer:  " << this->BufferSize[0] << "x" << this->BufferSize[1] << " RGBA "
     << (this->BufferType == GL_FLOAT ? "float" : "unsigned byte") << "\n";
   s << "OpenGL context:  core profile " << this->ContextMajor << "." << this->ContextMinor << "\n";
-  const char* gl = this->Superclass::ReportCapabilities();
-  s << (gl ? gl : "");
-  this->CapabilitiesReport = s.str();
-  return this->CapabilitiesReport.c_str();
-}
-
-//------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::Start()
-{
-  this->Initialize();
-  if (this->ContextValid && this->Initialized)
-  {
-    this->Superclass::Start();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::Render()
-{
-  if (!this->EnsureContext())
-  {
-    return; // the failure has been reported once; rendering is a no-op
-  }
-  this->Initialize();
-  if (this->Initialized)
-  {
-    this->Superclass::Render();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOSMesaRenderWindow::Frame()
-{
-  if (this->ContextValid && this->Initialized)
-  {
-    this->Superclass::Frame();
-  }
-}
-
-//------------------------------------------------------------------------------
-int vtkOSMesaRenderWindow::ReadPixels(
-  const vtkRecti& rect, int front, int glFormat, int glType, void* data, int right)
-{
-  if (!this->EnsureContext() || !this->Initialized)
-  {
-    return VTK_ERROR;
-  }
-  this->MakeCurrent();
-  return this->Superclass::ReadPixels(rect, front, glFormat, glType, data, right);
-}
-
-//------------------------------------------------------------------------------
-void* vtkOSMesaRenderWindow::GetGenericContext()
-{
-  return this->Context;
+  return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkOSMesaRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ContextValid: " << this->ContextValid << "\n";
-  os << indent << "ContextVersion: " << this->ContextMajor << "." << this->ContextMinor << "\n";
-  os << indent << "Context: " << this->Context << "\n";
   os << indent << "BufferSize: " << this->BufferSize[0] << "x" << this->BufferSize[1] << "\n";
   os << indent << "UseFloatBuffer: " << this->UseFloatBuffer << "\n";
-  os << indent << "LastError: " << (this->LastError.empty() ? "(none)" : this->LastError)
-     << "\n";
 }

@@ -28,26 +28,24 @@
  * GetLastError()) and rendering is a no-op.
  *
  * The OSMesa color buffer (RGBA, unsigned byte or float, window size,
- * reallocated on SetSize) only backs the default framebuffer: VTK renders
- * into its own framebuffer objects (OffScreenRendering on, frame blit mode
- * NoBlit) and all read-back (vtkWindowToImageFilter, GetPixelData,
- * GetRGBAPixelData) goes through those objects.
+ * reallocated on SetSize) only backs the default framebuffer; rendering and
+ * read-back go through VTK's framebuffer objects (see vtkHeadlessRenderWindow).
  */
 
 #ifndef vtkOSMesaRenderWindow_h
 #define vtkOSMesaRenderWindow_h
 
 #include "sssTranslucencyModule.h"
-#include "vtkGenericOpenGLRenderWindow.h"
+#include "vtkHeadlessRenderWindow.h"
 
 #include <string> // for std::string
 #include <vector> // for std::vector
 
-class SSSTRANSLUCENCY_EXPORT vtkOSMesaRenderWindow : public vtkGenericOpenGLRenderWindow
+class SSSTRANSLUCENCY_EXPORT vtkOSMesaRenderWindow : public vtkHeadlessRenderWindow
 {
 public:
   static vtkOSMesaRenderWindow* New();
-  vtkTypeMacro(vtkOSMesaRenderWindow, vtkGenericOpenGLRenderWindow);
+  vtkTypeMacro(vtkOSMesaRenderWindow, vtkHeadlessRenderWindow);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -75,46 +73,6 @@ public:
 
   ///@{
   /**
-   * Context management (overrides of the virtuals that
-   * vtkGenericOpenGLRenderWindow otherwise forwards to observer events).
-   */
-  void Initialize() override;
-  void Finalize() override;
-  void MakeCurrent() override;
-  bool IsCurrent() override;
-  void ReleaseCurrent() override;
-  vtkTypeBool IsDirect() override;
-  ///@}
-
-  /**
-   * Returns 1 when an OSMesa core >= 3.2 context works in this process.
-   */
-  int SupportsOpenGL() override;
-
-  /**
-   * OSMesa details followed by VTK's OpenGL report.
-   */
-  const char* ReportCapabilities() override;
-
-  ///@{
-  /**
-   * Rendering entry points; all are no-ops without a valid context.
-   */
-  void Start() override;
-  void Render() override;
-  void Frame() override;
-  void OpenGLInit() override;
-  ///@}
-
-  /**
-   * Resizes the window and its OSMesa buffer (rebinding it when the context
-   * is current).
-   */
-  void SetSize(int width, int height) override;
-  using vtkGenericOpenGLRenderWindow::SetSize;
-
-  ///@{
-  /**
    * Use a GL_FLOAT instead of a GL_UNSIGNED_BYTE RGBA OSMesa buffer
    * (takes effect at the next MakeCurrent()).
    */
@@ -124,41 +82,29 @@ public:
   ///@}
 
   /**
-   * The OSMesaContext and the OSMesa color buffer, as opaque pointers.
+   * The OSMesa color buffer, as an opaque pointer.
    */
-  void* GetGenericContext() override;
   void* GetOSMesaBuffer() { return this->Buffer.empty() ? nullptr : this->Buffer.data(); }
-
-  bool IsContextValid();
-  const std::string& GetLastError() const { return this->LastError; }
-  int GetContextMajorVersion() const { return this->ContextMajor; }
-  int GetContextMinorVersion() const { return this->ContextMinor; }
 
 protected:
   vtkOSMesaRenderWindow();
   ~vtkOSMesaRenderWindow() override;
 
-  bool EnsureContext();
-  bool CreateContext();
-  void DestroyContext();
+  bool CreateContext() override;
+  void DestroyContext() override;
+  bool MakeContextCurrent() override;
+  void ReleaseContext() override;
+  bool IsContextCurrent() override;
+  void ResizeDrawable() override;
+  bool ReportContext(std::ostream& os) override;
+  const char* GetBackendName() const override { return "OSMesa"; }
+
   bool BindBuffer();
-  void Fail(const std::string& why);
 
-  void OpenGLInitContext() override;
-  int ReadPixels(
-    const vtkRecti& rect, int front, int glFormat, int glType, void* data, int right) override;
-
-  void* Context;
   std::vector<unsigned char> Buffer;
   int BufferSize[2];
   unsigned int BufferType;
   bool UseFloatBuffer;
-  bool ContextAttempted;
-  bool ContextValid;
-  int ContextMajor;
-  int ContextMinor;
-  std::string LastError;
-  std::string CapabilitiesReport;
 
 private:
   vtkOSMesaRenderWindow(const vtkOSMesaRenderWindow&) = delete;
