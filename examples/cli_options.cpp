@@ -81,6 +81,8 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --grid-level K            virtual grid of 2^K points per axis (default 0: automatic)
   --max-map N               largest illumination-map side, texels (default 4096)
   --opening-angle V         pyramid walk accuracy, smaller is finer (default 0.5)
+  --group-lengths V         pyramid walk: largest source group, in diffusion lengths 1/s_tr
+                            of the channels that still matter (default 3)
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
                             the 99.5th percentile of the visible Lo maps to white)
@@ -175,6 +177,10 @@ Options parse(int argc, char** argv) {
       if (n < 0 || n > 100000 || n != std::floor(n))
         throw std::invalid_argument("--frames: needs a whole number from 0 to 100000");
       o.frames = static_cast<int>(n);
+    } else if (flag == "--group-lengths") {
+      o.group_diffusion_lengths = number(flag, value());
+      if (o.group_diffusion_lengths < 0.1)
+        throw std::invalid_argument("--group-lengths: needs a value of at least 0.1");
     } else if (flag == "--exposure") {
       o.exposure = number(flag, value());
       if (o.exposure < 0) throw std::invalid_argument("--exposure: must be >= 0");

@@ -137,6 +137,7 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"grid_spacing_mm\": " << pass->GetLastGridSpacingMillimetres()
         << ", \"requested_grid_level\": " << o.grid_level
         << ", \"opening_angle\": " << o.opening_angle
+        << ", \"group_diffusion_lengths\": " << o.group_diffusion_lengths
         << ", \"near_field_cells\": " << pass->GetNearFieldCells()
         << ", \"exposure\": " << pass->GetExposure() << "},\n"
         << "  \"steps_run\": {\"illumination\": " << pass->GetIlluminationRuns()
@@ -242,6 +243,7 @@ int run(const Options& o) {
   pass->SetGridLevel(o.grid_level);
   pass->SetMaxMapSize(o.max_map_size);
   pass->SetOpeningAngle(o.opening_angle);
+  pass->SetMaxGroupDiffusionLengths(o.group_diffusion_lengths);
   pass->SetTexelPerZr(o.texel_per_z_r);
   pass->SetExposure(o.exposure);
   pass->SetCaptureLinearImage(!o.linear_pfm.empty() || o.exposure == 0.0);

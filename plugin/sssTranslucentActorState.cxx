@@ -439,6 +439,8 @@ void TranslucentActorState::set_gather_uniforms(vtkShaderProgram* program,
   program->SetUniform3fv("mapAxisV", kMaxLights, axis_v.data());
   program->SetUniform2fv("mapCorner", kMaxLights, corner.data());
   program->SetUniformf("openingAngle", static_cast<float>(settings.opening_angle));
+  program->SetUniformf(
+    "maxGroupDiffusionLengths", static_cast<float>(settings.max_group_diffusion_lengths));
   program->SetUniformf("supportRadius", static_cast<float>(g.support_radius));
   if (settings.strategy == KernelStrategy::Paper)
   {

@@ -39,6 +39,7 @@ struct GpuSettings
 {
   KernelStrategy strategy = KernelStrategy::Surfel;
   double opening_angle = 0.5;
+  double max_group_diffusion_lengths = 3.0;
   double near_field_cells = 2.0;
   int grid_level = 0;
   double texel_per_z_r = 0.25;
@@ -46,6 +47,7 @@ struct GpuSettings
   bool operator==(const GpuSettings& o) const
   {
     return strategy == o.strategy && opening_angle == o.opening_angle &&
+      max_group_diffusion_lengths == o.max_group_diffusion_lengths &&
       near_field_cells == o.near_field_cells && grid_level == o.grid_level &&
       texel_per_z_r == o.texel_per_z_r && max_map_size == o.max_map_size;
   }

@@ -154,6 +154,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   sss::GpuSettings settings;
   settings.strategy = static_cast<sss::KernelStrategy>(this->KernelStrategy);
   settings.opening_angle = this->OpeningAngle;
+  settings.max_group_diffusion_lengths = this->MaxGroupDiffusionLengths;
   settings.near_field_cells = this->NearFieldCells;
   settings.grid_level = this->GridLevel;
   settings.texel_per_z_r = this->TexelPerZr;
@@ -527,6 +528,7 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "KernelStrategy: " << this->KernelStrategy << "\n";
   os << indent << "OpeningAngle: " << this->OpeningAngle << "\n";
+  os << indent << "MaxGroupDiffusionLengths: " << this->MaxGroupDiffusionLengths << "\n";
   os << indent << "NearFieldCells: " << this->NearFieldCells << "\n";
   os << indent << "GridLevel: " << this->GridLevel << "\n";
   os << indent << "TexelPerZr: " << this->TexelPerZr << "\n";

@@ -1,7 +1,9 @@
 // B(x) of eq. 17 from the illumination maps' pyramids: a tree walk over the map texels that
 // takes a texel group as one source, with its point covariance as a second-order term, once it
-// subtends less than openingAngle seen from x (the GPU form of the CPU reference's source
-// tree). Needs dipole.glsl and kernel_window.glsl.
+// subtends less than openingAngle seen from x and spans at most maxGroupDiffusionLengths of
+// every channel whose kernel still matters there (over more, e^(-s_tr d) leaves its
+// second-order expansion). The GPU form of the CPU reference's source tree. Needs dipole.glsl
+// and kernel_window.glsl.
 
 uniform sampler2D mapPoint;
 uniform sampler2D mapPower;
@@ -13,6 +15,7 @@ uniform int levelCount[SSS_MAX_LIGHTS];
 uniform vec4 levelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
 uniform float texelSize[SSS_MAX_LIGHTS];                   // level 0 texel edge, mm
 uniform float openingAngle;
+uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral
 
 vec3 gatherB(vec3 x)
@@ -46,7 +49,17 @@ vec3 gatherB(vec3 x)
       }
       bool straddlesWindow = windowPart != 0 && d + size > windowR0 && d - size < windowR1 &&
         size > 0.25 * (windowR1 - windowR0);
-      if (level == 0 || (size < openingAngle * d && !straddlesWindow) || depth > 60)
+      float sTrSignificant = 0.0;  // fastest decay among channels not yet below e^-16
+      for (int c = 0; c < 3; ++c)
+      {
+        if (sTr[c] * (d - size) < 16.0)
+        {
+          sTrSignificant = max(sTrSignificant, sTr[c]);
+        }
+      }
+      bool smallEnough =
+        size < openingAngle * d && size * sTrSignificant < maxGroupDiffusionLengths;
+      if (level == 0 || (smallEnough && !straddlesWindow) || depth > 60)
       {
         vec3 power = texelFetch(mapPower, texel, 0).rgb;
         vec4 c0 = texelFetch(mapCovariance0, texel, 0);
