@@ -82,7 +82,7 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --max-map N               largest illumination-map side, texels (default 4096)
   --opening-angle V         pyramid walk accuracy, smaller is finer (default 0.5)
   --group-lengths V         pyramid walk: largest source group, in diffusion lengths 1/s_tr
-                            of the channels that still matter (default 3)
+                            of the channels that still matter (default 2)
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
                             the 99.5th percentile of the visible Lo maps to white)

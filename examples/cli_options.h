@@ -30,7 +30,7 @@ struct Options {
   int grid_level = 0;
   int max_map_size = 4096;
   double opening_angle = 0.5;
-  double group_diffusion_lengths = 3.0;
+  double group_diffusion_lengths = 2.0;
   double exposure = 0.0;  // 0: automatic
   double texel_per_z_r = 0.25;
   int frames = 0;

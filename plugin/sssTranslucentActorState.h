@@ -39,7 +39,7 @@ struct GpuSettings
 {
   KernelStrategy strategy = KernelStrategy::Surfel;
   double opening_angle = 0.5;
-  double max_group_diffusion_lengths = 3.0;
+  double max_group_diffusion_lengths = 2.0;
   double near_field_cells = 2.0;
   int grid_level = 0;
   double texel_per_z_r = 0.25;

@@ -66,7 +66,7 @@ public:
   /**
    * Pyramid walk: a group also counts as one source only while it spans at most this many
    * diffusion lengths (1 / s_tr) of every channel whose kernel still matters at its distance;
-   * over more, the kernel's exponential leaves its second-order expansion (default 3).
+   * over more, the kernel's exponential leaves its second-order expansion (default 2).
    */
   vtkSetClampMacro(MaxGroupDiffusionLengths, double, 0.1, VTK_DOUBLE_MAX);
   vtkGetMacro(MaxGroupDiffusionLengths, double);
@@ -179,7 +179,7 @@ protected:
 
   int KernelStrategy = SURFEL;
   double OpeningAngle = 0.5;
-  double MaxGroupDiffusionLengths = 3.0;
+  double MaxGroupDiffusionLengths = 2.0;
   double NearFieldCells = 2.0;
   int GridLevel = 0;
   double TexelPerZr = 0.25;

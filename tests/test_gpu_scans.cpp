@@ -61,8 +61,8 @@ TEST_P(GpuVsReference, MeetsTheMeanGoalAndFivePercentAtP99) {
 INSTANTIATE_TEST_SUITE_P(
     Scans, GpuVsReference,
     ::testing::Values(ScanCase{"bunny", "stanford_bunny.ply", "marble", 2},
-                      ScanCase{"bunny", "stanford_bunny.ply", "skimmilk", 2},
-                      ScanCase{"bunny", "stanford_bunny.ply", "ketchup", 2},
+                      ScanCase{"bunny", "stanford_bunny.ply", "skimmilk", 1},
+                      ScanCase{"bunny", "stanford_bunny.ply", "ketchup", 1},
                       ScanCase{"dragon", "dragon_vrip_res2.ply.gz", "marble", 1},
                       ScanCase{"dragon", "dragon_vrip_res2.ply.gz", "skimmilk", 1},
                       ScanCase{"dragon", "dragon_vrip_res2.ply.gz", "ketchup", 1}),
