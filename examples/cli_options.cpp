@@ -86,6 +86,9 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
                             the 99.5th percentile of the visible Lo maps to white)
+  --radius-scale F          disc radius over the input's own (0.8 x mean edge for meshes,
+                            mean point spacing for PCD clouds) (default 1.5: closes the
+                            gaps that grazing discs leave)
   --frames N                after the outputs, time N frames with the camera orbiting (light
                             static), N with the light moving, and N of plain VTK points
                             (vertex cells, point size 2) of the same cloud (default 0)
@@ -172,6 +175,10 @@ Options parse(int argc, char** argv) {
       o.opening_angle = number(flag, value());
       if (o.opening_angle < 0.05 || o.opening_angle > 2.0)
         throw std::invalid_argument("--opening-angle: needs a value from 0.05 to 2");
+    } else if (flag == "--radius-scale") {
+      o.radius_scale = number(flag, value());
+      if (o.radius_scale <= 0 || o.radius_scale > 10)
+        throw std::invalid_argument("--radius-scale: needs a value in (0, 10]");
     } else if (flag == "--frames") {
       const double n = number(flag, value());
       if (n < 0 || n > 100000 || n != std::floor(n))

@@ -34,6 +34,7 @@ struct Options {
   double exposure = 0.0;  // 0: automatic
   double texel_per_z_r = 0.25;
   int frames = 0;
+  double radius_scale = 1.5;
   bool help = false;
 };
 

@@ -203,6 +203,7 @@ int run(const Options& o) {
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = std::move(loaded.cloud);
   }
+  cloud.radius *= o.radius_scale;
   timings.load = clock.lap();
   std::fprintf(stderr, "%zu surfels (radius %g), %s, %s method on %s\n", cloud.size(),
                cloud.radius, material.name.c_str(), o.method.c_str(), o.backend.c_str());
