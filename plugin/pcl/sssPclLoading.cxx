@@ -1,0 +1,207 @@
+#include "sssPclLoading.h"
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/PolygonMesh.h>
+#include <pcl/common/io.h>
+#include <pcl/console/print.h>
+#include <pcl/conversions.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/point_types.h>
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include <vector>
+
+#include "sssPclMeshSampling.h"
+
+namespace sss {
+namespace {
+
+bool ends_with(std::string s, const std::string& tail) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+bool has_field(const pcl::PCLPointCloud2& blob, const std::string& name) {
+  return std::any_of(blob.fields.begin(), blob.fields.end(),
+                     [&](const pcl::PCLPointField& f) { return f.name == name; });
+}
+
+// PCL reports parse problems on its console; the caller reports one message instead.
+class QuietPclConsole {
+ public:
+  QuietPclConsole() : saved_(pcl::console::getVerbosityLevel()) {
+    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+  }
+  ~QuietPclConsole() { pcl::console::setVerbosityLevel(saved_); }
+
+ private:
+  pcl::console::VERBOSITY_LEVEL saved_;
+};
+
+// A gzip file inflated into a temporary file that is removed with this object.
+class InflatedCopy {
+ public:
+  InflatedCopy(const std::string& path, const std::string& suffix) {
+    std::string pattern =
+      (std::filesystem::temp_directory_path() / ("sss-inflated-XXXXXX" + suffix)).string();
+    const int fd = mkstemps(pattern.data(), static_cast<int>(suffix.size()));
+    if (fd < 0) throw InputError(path + ": cannot create a temporary file to inflate it into");
+    path_ = pattern;
+    gzFile in = gzopen(path.c_str(), "rb");
+    bool ok = in != nullptr;
+    std::vector<char> buffer(1 << 20);
+    while (ok) {
+      const int n = gzread(in, buffer.data(), static_cast<unsigned>(buffer.size()));
+      if (n < 0) ok = false;
+      if (n <= 0) break;
+      ok = write(fd, buffer.data(), static_cast<std::size_t>(n)) == n;
+    }
+    if (in) gzclose(in);
+    close(fd);
+    if (!ok) {
+      std::remove(path_.c_str());
+      throw InputError(path + ": not a readable gzip file");
+    }
+  }
+  ~InflatedCopy() { std::remove(path_.c_str()); }
+  InflatedCopy(const InflatedCopy&) = delete;
+  InflatedCopy& operator=(const InflatedCopy&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+struct Blob {
+  pcl::PCLPointCloud2 points;
+  Eigen::Vector4f sensor_origin = Eigen::Vector4f::Zero();
+  Eigen::Quaternionf sensor_orientation = Eigen::Quaternionf::Identity();
+  std::string kind;
+};
+
+// PCL's PCD reader can crash on a file whose header is not PCD, so the header is checked
+// first: the keys up to DATA, in a text header of bounded size.
+void check_pcd_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::vector<std::string> keys;
+  for (int lines = 0; lines < 64 && std::getline(in, line); ++lines) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::string key = line.substr(0, line.find_first_of(" \t\r"));
+    keys.push_back(key);
+    if (key == "DATA") break;
+  }
+  for (const char* required : {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS", "DATA"})
+    if (std::find(keys.begin(), keys.end(), required) == keys.end())
+      throw InputError(path + ": not a readable PCD file (its header has no " + required + " line)");
+}
+
+Blob read_pcd(const std::string& path) {
+  check_pcd_header(path);
+  Blob blob;
+  if (pcl::io::loadPCDFile(path, blob.points, blob.sensor_origin, blob.sensor_orientation) < 0)
+    throw InputError(path + ": not a readable PCD file");
+  blob.kind = "PCD";
+  return blob;
+}
+
+Blob read_ply(const std::string& shown_path, const std::string& path, const LoadOptions& options) {
+  pcl::PolygonMesh mesh;
+  if (pcl::io::loadPLYFile(path, mesh) < 0) throw InputError(shown_path + ": not a readable PLY file");
+  Blob blob;
+  if (mesh.polygons.empty()) {
+    if (options.mesh_samples > 0)
+      throw InputError(shown_path + ": mesh sampling asked for, but the PLY file has no faces");
+    blob.points = std::move(mesh.cloud);
+    blob.kind = "PLY points";
+    return blob;
+  }
+  const bool colours = has_field(mesh.cloud, "rgb") || has_field(mesh.cloud, "rgba");
+  if (options.mesh_samples > 0) {
+    pcl::PointCloud<pcl::PointXYZRGBNormal> samples;
+    try {
+      samples = sampleMeshSurface(mesh, options.mesh_samples, options.sampling_seed);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(shown_path + ": " + e.what());
+    }
+    pcl::toPCLPointCloud2(samples, blob.points);
+    blob.kind = "PLY mesh, " + std::to_string(mesh.polygons.size()) + " faces sampled";
+  } else if (has_field(mesh.cloud, "normal_x")) {
+    blob.points = std::move(mesh.cloud);
+    blob.kind = "PLY mesh vertices";
+    return blob;
+  } else {
+    pcl::toPCLPointCloud2(meshVerticesWithNormals(mesh), blob.points);
+    blob.kind = "PLY mesh vertices, normals from " + std::to_string(mesh.polygons.size()) + " faces";
+  }
+  if (!colours) {  // the conversion above added an rgb field; drop it again
+    auto& fields = blob.points.fields;
+    fields.erase(std::remove_if(fields.begin(), fields.end(),
+                                [](const pcl::PCLPointField& f) { return f.name == "rgb"; }),
+                 fields.end());
+  }
+  return blob;
+}
+
+Blob read_any(const std::string& path, const LoadOptions& options) {
+  if (!std::ifstream(path).good()) throw InputError(path + ": cannot be opened");
+  if (std::filesystem::is_directory(path)) throw InputError(path + ": is a folder, not a file");
+  if (ends_with(path, ".pcd")) return read_pcd(path);
+  if (ends_with(path, ".ply")) return read_ply(path, path, options);
+  if (ends_with(path, ".ply.gz")) {
+    const InflatedCopy plain(path, ".ply");
+    return read_ply(path, plain.path(), options);
+  }
+  throw InputError(path + ": unknown extension (use .pcd, .ply or .ply.gz)");
+}
+
+}  // namespace
+
+template <typename PointT>
+LoadedPointCloud<PointT> loadPointCloud(const std::string& path, const LoadOptions& options) {
+  const QuietPclConsole quiet;
+  const Blob blob = read_any(path, options);
+  const std::size_t count = std::size_t{blob.points.width} * blob.points.height;
+  if (count == 0 || blob.points.data.empty()) throw InputError(path + ": the file has no points");
+
+  LoadedPointCloud<PointT> loaded;
+  loaded.path = path;
+  loaded.cloud.reset(new pcl::PointCloud<PointT>);
+  pcl::fromPCLPointCloud2(blob.points, *loaded.cloud);
+  loaded.cloud->sensor_origin_ = blob.sensor_origin;
+  loaded.cloud->sensor_orientation_ = blob.sensor_orientation;
+  const bool file_normals = has_field(blob.points, "normal_x");
+  const bool file_colours = has_field(blob.points, "rgb") || has_field(blob.points, "rgba");
+  loaded.has_normals = file_normals && pcl::traits::has_normal_v<PointT>;
+  loaded.has_colours = file_colours && pcl::traits::has_color_v<PointT>;
+
+  loaded.description = path + ": " + blob.kind + ", " + std::to_string(count) + " points";
+  if (blob.points.height > 1)
+    loaded.description += " (organised " + std::to_string(blob.points.width) + " x " +
+                          std::to_string(blob.points.height) + ")";
+  if (file_normals)
+    loaded.description += loaded.has_normals ? ", normals" : ", normals not kept by this point type";
+  if (file_colours)
+    loaded.description += loaded.has_colours ? ", colours" : ", colours not kept by this point type";
+  return loaded;
+}
+
+#define SSS_INSTANTIATE_LOADING(PointT) \
+  template LoadedPointCloud<PointT> loadPointCloud<PointT>(const std::string&, const LoadOptions&);
+SSS_INSTANTIATE_LOADING(pcl::PointXYZ)
+SSS_INSTANTIATE_LOADING(pcl::PointNormal)
+SSS_INSTANTIATE_LOADING(pcl::PointXYZRGB)
+SSS_INSTANTIATE_LOADING(pcl::PointXYZRGBNormal)
+SSS_INSTANTIATE_LOADING(pcl::PointSurfel)
+#undef SSS_INSTANTIATE_LOADING
+
+}  // namespace sss

@@ -1,0 +1,65 @@
+// A PCL cloud as surfels for vtkSurfelMapper: finite points, unit normals (kept, or estimated
+// with NormalEstimationOMP over a neighbourhood taken from the spacing), one radius from the
+// spacing found with PCL's kd-tree, and colours kept as per-point albedo.
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <vtkSmartPointer.h>
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <string>
+
+#include "sssPclLoading.h"
+
+class vtkPolyData;
+
+namespace sss {
+
+enum class NormalOrientation {
+  Automatic,         // towards the sensor for organised clouds or a set sensor origin, else Outward
+  Outward,           // away from the cloud's centroid (closed objects)
+  TowardsViewpoint,  // towards SurfelOptions::viewpoint (scans from one place, terrain)
+};
+
+struct SurfelOptions {
+  NormalOrientation orientation = NormalOrientation::Automatic;
+  Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();
+  // Normal estimation neighbourhood radius in scene units; 0: NormalRadiusSpacings times the
+  // mean spacing. Points with too few neighbours in it fall back to their NormalNeighbours
+  // nearest.
+  double normal_radius = 0.0;
+  double normal_radius_spacings = 3.0;
+  int normal_neighbours = 16;
+  // Disc radius over the mean nearest-neighbour spacing: 1 leaves gaps between discs seen at
+  // grazing angles, through which the lit far side shows.
+  double radius_scale = 1.5;
+};
+
+struct Surfels {
+  // Double-precision points (georeferenced coordinates keep their digits), "Normals"
+  // (float, unit) and, when the cloud has colours, "Colors" (unsigned char RGB) as scalars.
+  vtkSmartPointer<vtkPolyData> polydata;
+  double spacing = 0.0;  // mean distance to the nearest other point, scene units
+  double radius = 0.0;   // spacing times radius_scale
+  bool has_colours = false;
+  bool estimated_normals = false;
+  std::size_t input_points = 0;
+  std::size_t nonfinite_points = 0;      // NaN or infinite position (organised clouds' holes)
+  std::size_t points_without_normal = 0;  // no usable normal given or estimated
+  std::size_t size() const;
+  std::string summary() const;
+};
+
+// Throws InputError naming what is wrong: no finite point, too few points for normals, all
+// points at one place. Normals are kept when the point type has them and any of them is
+// finite and non-zero; otherwise estimated. Instantiated for PointXYZ, PointNormal,
+// PointXYZRGB, PointXYZRGBNormal and PointSurfel.
+template <typename PointT>
+Surfels makeSurfels(const pcl::PointCloud<PointT>& cloud, const SurfelOptions& options = {});
+
+// As above, with what the file said about normals and colours.
+template <typename PointT>
+Surfels makeSurfels(const LoadedPointCloud<PointT>& loaded, const SurfelOptions& options = {});
+
+}  // namespace sss

@@ -1,0 +1,253 @@
+#include "sssPclTranslucentCloud.h"
+
+#include <pcl/point_types.h>
+#include <pcl/visualization/pcl_visualizer.h>
+
+#include <vtkActor.h>
+#include <vtkFloatArray.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "vtkSubsurfacePass.h"
+#include "vtkSurfelMapper.h"
+#include "vtkTranslucentMaterial.h"
+
+namespace sss {
+namespace {
+
+int strategy_of(Quality quality) {
+  switch (quality) {
+    case Quality::Interactive: return vtkSubsurfacePass::PAPER;
+    case Quality::Balanced: return vtkSubsurfacePass::GRID_NEAR;
+    case Quality::Accurate: break;
+  }
+  return vtkSubsurfacePass::SURFEL;
+}
+
+// The renderers PCLVisualizer means by a viewport: all for 0, else the viewport-th one.
+std::vector<vtkSmartPointer<vtkRenderer>> renderers_of(pcl::visualization::PCLVisualizer& viewer,
+                                                       int viewport) {
+  std::vector<vtkSmartPointer<vtkRenderer>> chosen;
+  vtkRendererCollection* all = viewer.getRendererCollection();
+  all->InitTraversal();
+  int index = 0;
+  while (vtkRenderer* renderer = all->GetNextItem()) {
+    if (viewport == 0 || viewport == index) chosen.emplace_back(renderer);
+    ++index;
+  }
+  return chosen;
+}
+
+bool has_translucent_actor(vtkRenderer* renderer) {
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+    if (vtkTranslucentMaterial::GetFrom(actor)) return true;
+  return false;
+}
+
+// Ft at normal incidence, 1 - ((eta - 1) / (eta + 1))^2 (eq. 4 at theta = 0).
+double head_on_transmittance(double eta) {
+  const double r = (eta - 1.0) / (eta + 1.0);
+  return 1.0 - r * r;
+}
+
+}  // namespace
+
+const char* qualityName(Quality quality) {
+  switch (quality) {
+    case Quality::Interactive: return "interactive (paper)";
+    case Quality::Balanced: return "balanced (grid + near)";
+    case Quality::Accurate: break;
+  }
+  return "accurate (surfel)";
+}
+
+TranslucentCloud::TranslucentCloud(pcl::visualization::PCLVisualizer& viewer, std::string id,
+                                   Surfels surfels, const TranslucentCloudOptions& options)
+  : viewer_(viewer), id_(std::move(id)), surfels_(std::move(surfels)),
+    renderers_(renderers_of(viewer, options.viewport)) {
+  mapper_ = vtkSmartPointer<vtkSurfelMapper>::New();
+  mapper_->SetInputData(surfels_.polydata);
+  mapper_->SetRadius(surfels_.radius);
+  mapper_->SetScalarVisibility(surfels_.has_colours);
+  actor_ = vtkSmartPointer<vtkActor>::New();
+  actor_->SetMapper(mapper_);
+  material_ = vtkSmartPointer<vtkTranslucentMaterial>::New();
+  if (!material_->SetPreset(options.material.c_str()))
+    throw std::invalid_argument("unknown material \"" + options.material + "\"");
+  material_->SetMillimetresPerUnit(options.millimetres_per_unit);
+  material_->SetColoursAsAlbedo(surfels_.has_colours);
+  const std::string problem = material_->Validate();
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  material_->ApplyTo(actor_);
+
+  for (const auto& renderer : renderers_) {
+    vtkSmartPointer<vtkSubsurfacePass> pass = vtkSubsurfacePass::SafeDownCast(renderer->GetPass());
+    if (!pass) {
+      if (renderer->GetPass())
+        vtkGenericWarningMacro("Renderer's own render pass replaced by a vtkSubsurfacePass");
+      pass = vtkSmartPointer<vtkSubsurfacePass>::New();
+      pass->MeasureStepTimesOn();
+      renderer->SetPass(pass);
+    }
+    passes_.push_back(pass);
+    renderer->AddActor(actor_);
+  }
+  viewer_.getShapeActorMap()->emplace(id_, actor_);
+  setQuality(options.quality);
+}
+
+TranslucentCloud::~TranslucentCloud() = default;
+
+bool TranslucentCloud::setMaterial(const std::string& preset) {
+  if (!material_->SetPreset(preset.c_str())) return false;
+  actor_->Modified();
+  return true;
+}
+
+bool TranslucentCloud::setCustomMaterial(const Eigen::Vector3d& sigma_a,
+                                         const Eigen::Vector3d& sigma_s_prime, double eta) {
+  vtkNew<vtkTranslucentMaterial> candidate;
+  candidate->SetSigmaA(sigma_a.x(), sigma_a.y(), sigma_a.z());
+  candidate->SetSigmaSPrime(sigma_s_prime.x(), sigma_s_prime.y(), sigma_s_prime.z());
+  candidate->SetEta(eta);
+  candidate->SetMillimetresPerUnit(material_->GetMillimetresPerUnit());
+  const std::string problem = candidate->Validate();
+  if (!problem.empty()) {
+    vtkGenericWarningMacro("Material not changed: " << problem);
+    return false;
+  }
+  material_->SetSigmaA(sigma_a.x(), sigma_a.y(), sigma_a.z());
+  material_->SetSigmaSPrime(sigma_s_prime.x(), sigma_s_prime.y(), sigma_s_prime.z());
+  material_->SetEta(eta);
+  return true;
+}
+
+void TranslucentCloud::setMillimetresPerUnit(double millimetres_per_unit) {
+  material_->SetMillimetresPerUnit(millimetres_per_unit);
+}
+
+void TranslucentCloud::setColoursAsAlbedo(bool on) {
+  material_->SetColoursAsAlbedo(on && surfels_.has_colours);
+}
+
+void TranslucentCloud::setLights(const std::vector<Eigen::Vector3d>& towards_light,
+                                 double irradiance) {
+  for (const auto& renderer : renderers_) {
+    for (const auto& light : lights_) renderer->RemoveLight(light);
+    renderer->AutomaticLightCreationOff();
+  }
+  lights_.clear();
+  for (const Eigen::Vector3d& d : towards_light) {
+    auto light = vtkSmartPointer<vtkLight>::New();
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetFocalPoint(0, 0, 0);
+    light->SetPosition(d.x(), d.y(), d.z());
+    light->SetIntensity(irradiance);
+    lights_.push_back(light);
+    for (const auto& renderer : renderers_) renderer->AddLight(light);
+  }
+}
+
+void TranslucentCloud::setQuality(Quality quality) {
+  quality_ = quality;
+  for (const auto& pass : passes_) pass->SetKernelStrategy(strategy_of(quality));
+}
+
+void TranslucentCloud::setExposure(double exposure) {
+  for (const auto& pass : passes_) pass->SetExposure(exposure);
+}
+
+double TranslucentCloud::autoExpose() {
+  vtkNew<vtkFloatArray> B;
+  if (!pass()->GetSurfelRadiance(actor_, B)) {
+    viewer_.getRenderWindow()->Render();
+    if (!pass()->GetSurfelRadiance(actor_, B)) return pass()->GetExposure();
+  }
+  std::vector<float> brightest;
+  brightest.reserve(static_cast<std::size_t>(B->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < B->GetNumberOfTuples(); ++i) {
+    const float* b = B->GetPointer(3 * i);
+    brightest.push_back(std::max({b[0], b[1], b[2]}));
+  }
+  if (brightest.empty()) return pass()->GetExposure();
+  const std::size_t k = std::min(brightest.size() - 1, brightest.size() * 995 / 1000);
+  std::nth_element(brightest.begin(), brightest.begin() + static_cast<long>(k), brightest.end());
+  const double Lo = brightest[k] * head_on_transmittance(material_->GetEta());
+  if (Lo > 0.0 && std::isfinite(Lo)) setExposure(1.0 / Lo);
+  return pass()->GetExposure();
+}
+
+void TranslucentCloud::setVisible(bool visible) { actor_->SetVisibility(visible); }
+
+void TranslucentCloud::remove() {
+  if (!attached_) return;
+  attached_ = false;
+  viewer_.getShapeActorMap()->erase(id_);
+  for (const auto& renderer : renderers_) {
+    renderer->RemoveActor(actor_);
+    if (renderer->GetPass() && !has_translucent_actor(renderer)) renderer->SetPass(nullptr);
+    for (const auto& light : lights_) renderer->RemoveLight(light);
+  }
+}
+
+vtkActor* TranslucentCloud::actor() const { return actor_; }
+vtkTranslucentMaterial* TranslucentCloud::material() const { return material_; }
+vtkSubsurfacePass* TranslucentCloud::pass() const { return passes_.front(); }
+
+std::string TranslucentCloud::settingsLine() const {
+  vtkSubsurfacePass* p = passes_.front();
+  const double B_seconds = p->GetLastIlluminationSeconds() + p->GetLastVirtualPointSeconds() +
+                           p->GetLastSurfelSeconds();
+  const std::string lights = lights_.empty() ? "headlight"
+                             : lights_.size() == 1 ? "1 light"
+                                                   : std::to_string(lights_.size()) + " lights";
+  char line[256];
+  std::snprintf(line, sizeof line, "%s, %g mm/unit, %s, %s, exposure %.3g, B %.2f s",
+                material_->GetName(), material_->GetMillimetresPerUnit(), qualityName(quality_),
+                lights.c_str(), p->GetExposure(), B_seconds);
+  return line;
+}
+
+TranslucentCloud::Ptr addTranslucentSurfels(pcl::visualization::PCLVisualizer& viewer,
+                                            Surfels surfels, const std::string& id,
+                                            const TranslucentCloudOptions& options) {
+  if (viewer.contains(id)) throw std::invalid_argument("the visualizer already shows \"" + id + "\"");
+  if (renderers_of(viewer, options.viewport).empty())
+    throw std::invalid_argument("the visualizer has no viewport " +
+                                std::to_string(options.viewport));
+  if (!surfels.polydata || surfels.size() == 0) throw InputError("\"" + id + "\": no surfels");
+  return TranslucentCloud::Ptr(new TranslucentCloud(viewer, id, std::move(surfels), options));
+}
+
+template <typename PointT>
+TranslucentCloud::Ptr addTranslucentCloud(pcl::visualization::PCLVisualizer& viewer,
+                                          const pcl::PointCloud<PointT>& cloud,
+                                          const std::string& id,
+                                          const TranslucentCloudOptions& options) {
+  return addTranslucentSurfels(viewer, makeSurfels(cloud, options.surfels), id, options);
+}
+
+#define SSS_INSTANTIATE_ONE_CALL(PointT)                                          \
+  template TranslucentCloud::Ptr addTranslucentCloud<PointT>(                     \
+    pcl::visualization::PCLVisualizer&, const pcl::PointCloud<PointT>&,           \
+    const std::string&, const TranslucentCloudOptions&);
+SSS_INSTANTIATE_ONE_CALL(pcl::PointXYZ)
+SSS_INSTANTIATE_ONE_CALL(pcl::PointNormal)
+SSS_INSTANTIATE_ONE_CALL(pcl::PointXYZRGB)
+SSS_INSTANTIATE_ONE_CALL(pcl::PointXYZRGBNormal)
+SSS_INSTANTIATE_ONE_CALL(pcl::PointSurfel)
+#undef SSS_INSTANTIATE_ONE_CALL
+
+}  // namespace sss

@@ -1,0 +1,127 @@
+// One call that shows a PCL cloud translucent in an existing PCLVisualizer, in the
+// visualizer's own window, and the handle that changes it afterwards.
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <vtkSmartPointer.h>
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sssPclSurfels.h"
+
+class vtkActor;
+class vtkLight;
+class vtkRenderer;
+class vtkSubsurfacePass;
+class vtkSurfelMapper;
+class vtkTranslucentMaterial;
+
+namespace pcl::visualization {
+class PCLVisualizer;
+}
+
+namespace sss {
+
+// How B is summed when a light, the geometry or the material changes (the camera alone never
+// re-runs it). Costs and errors per setting are in the benchmark (docs/benchmark.md).
+enum class Quality {
+  Interactive,  // vtkSubsurfacePass::PAPER: the 2005 paper's 49 taps on a 512 map
+  Balanced,     // GRID_NEAR: far field on the virtual grid, near field per surfel
+  Accurate,     // SURFEL: the pyramid walk at every surfel (the pass's default)
+};
+const char* qualityName(Quality quality);
+
+struct TranslucentCloudOptions {
+  std::string material = "marble";  // a vtkTranslucentMaterial preset
+  double millimetres_per_unit = 1.0;
+  Quality quality = Quality::Accurate;
+  SurfelOptions surfels;
+  int viewport = 0;  // PCLVisualizer viewport; 0: every renderer of the window
+};
+
+class TranslucentCloud;
+std::shared_ptr<TranslucentCloud> addTranslucentSurfels(pcl::visualization::PCLVisualizer& viewer,
+                                                        Surfels surfels, const std::string& id,
+                                                        const TranslucentCloudOptions& options);
+
+class TranslucentCloud {
+ public:
+  using Ptr = std::shared_ptr<TranslucentCloud>;
+  ~TranslucentCloud();  // leaves the cloud shown; remove() takes it away
+  TranslucentCloud(const TranslucentCloud&) = delete;
+  TranslucentCloud& operator=(const TranslucentCloud&) = delete;
+
+  // Returns false, with a VTK error naming the known presets, for an unknown name.
+  bool setMaterial(const std::string& preset);
+  // Coefficients in 1/mm per RGB channel; false (and unchanged) when they are not physical.
+  bool setCustomMaterial(const Eigen::Vector3d& sigma_a, const Eigen::Vector3d& sigma_s_prime,
+                         double eta);
+  void setMillimetresPerUnit(double millimetres_per_unit);
+  // Point colours scale the light entering each point (on by default when the cloud has them).
+  void setColoursAsAlbedo(bool on);
+  // Replaces the lights of the handle's renderers by directional lights shining from the given
+  // directions (towards the light, world frame) with the given irradiance each.
+  void setLights(const std::vector<Eigen::Vector3d>& towards_light, double irradiance = 1.0);
+  void setQuality(Quality quality);
+  Quality quality() const { return quality_; }
+  // sRGB(clamp(exposure * Lo)); autoExpose() sets it so that the 99.5th percentile of the
+  // surfels' head-on radiance is white (it renders once if nothing was rendered yet).
+  void setExposure(double exposure);
+  double autoExpose();
+  void setVisible(bool visible);
+  // Takes the actor out of the renderers (and the pass, when no other translucent cloud uses
+  // it). The id is also a PCLVisualizer shape id: viewer.removeShape(id) takes the actor out
+  // too, and viewer.contains(id) is true while it is shown.
+  void remove();
+
+  const std::string& id() const { return id_; }
+  const Surfels& surfels() const { return surfels_; }
+  vtkActor* actor() const;
+  vtkTranslucentMaterial* material() const;
+  vtkSubsurfacePass* pass() const;
+  // "marble, 1 mm/unit, quality accurate, 2 lights, exposure 3.1, B 0.41 s": for overlays.
+  std::string settingsLine() const;
+
+ private:
+  friend std::shared_ptr<TranslucentCloud> addTranslucentSurfels(
+    pcl::visualization::PCLVisualizer&, Surfels, const std::string&,
+    const TranslucentCloudOptions&);
+  TranslucentCloud(pcl::visualization::PCLVisualizer& viewer, std::string id, Surfels surfels,
+                   const TranslucentCloudOptions& options);
+
+  pcl::visualization::PCLVisualizer& viewer_;
+  std::string id_;
+  Surfels surfels_;
+  std::vector<vtkSmartPointer<vtkRenderer>> renderers_;
+  vtkSmartPointer<vtkSurfelMapper> mapper_;
+  vtkSmartPointer<vtkActor> actor_;
+  vtkSmartPointer<vtkTranslucentMaterial> material_;
+  std::vector<vtkSmartPointer<vtkSubsurfacePass>> passes_;  // one per renderer
+  std::vector<vtkSmartPointer<vtkLight>> lights_;
+  Quality quality_ = Quality::Accurate;
+  bool attached_ = true;
+};
+
+// Makes `cloud` translucent in `viewer` (no subclassing; the visualizer's own window and
+// renderers): builds surfels (normals kept or estimated, radius from the spacing, colours as
+// albedo), adds the actor and installs a vtkSubsurfacePass on the viewport's renderers.
+// Throws InputError for a cloud with nothing to show and std::invalid_argument for an unknown
+// material, a used id or a viewport the visualizer does not have. Instantiated for PointXYZ,
+// PointNormal, PointXYZRGB, PointXYZRGBNormal and PointSurfel.
+template <typename PointT>
+TranslucentCloud::Ptr addTranslucentCloud(pcl::visualization::PCLVisualizer& viewer,
+                                          const pcl::PointCloud<PointT>& cloud,
+                                          const std::string& id,
+                                          const TranslucentCloudOptions& options = {});
+
+// The same for surfels made already (from a file: makeSurfels(loadPointCloud<T>(path))); the
+// options' surfel settings are not used.
+inline TranslucentCloud::Ptr addTranslucentSurfels(pcl::visualization::PCLVisualizer& viewer,
+                                                   Surfels surfels, const std::string& id) {
+  return addTranslucentSurfels(viewer, std::move(surfels), id, TranslucentCloudOptions{});
+}
+
+}  // namespace sss

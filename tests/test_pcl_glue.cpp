@@ -1,0 +1,334 @@
+// The PCL glue: every file form the loader accepts, normals kept or estimated and oriented,
+// the radius from the spacing, colours as albedo, and one clear error per kind of bad input.
+#include <gtest/gtest.h>
+#include <pcl/PolygonMesh.h>
+#include <pcl/conversions.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/point_types.h>
+#include <unistd.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "scan_io.h"
+#include "sssPclLoading.h"
+#include "sssPclMeshSampling.h"
+#include "sssPclSurfels.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = 3.14159265358979323846;
+
+class PclGlue : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("sss-pcl-glue-" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+// Points on a sphere of radius r on a latitude-longitude lattice, coloured by height.
+pcl::PointCloud<pcl::PointXYZRGB> sphere_cloud(float r, int rings, int segments) {
+  pcl::PointCloud<pcl::PointXYZRGB> cloud;
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = kPi * i / rings, phi = 2.0 * kPi * j / segments;
+      pcl::PointXYZRGB p;
+      p.x = r * std::sin(theta) * std::cos(phi);
+      p.y = r * std::sin(theta) * std::sin(phi);
+      p.z = r * std::cos(theta);
+      p.r = static_cast<std::uint8_t>(i * 255 / rings);
+      p.g = 100;
+      p.b = static_cast<std::uint8_t>(j * 255 / segments);
+      cloud.push_back(p);
+    }
+  return cloud;
+}
+
+// An icosphere-like closed mesh: the lattice above triangulated, poles included.
+pcl::PolygonMesh sphere_mesh(float r, int rings, int segments) {
+  pcl::PointCloud<pcl::PointXYZ> vertices;
+  vertices.push_back(pcl::PointXYZ(0, 0, r));
+  for (const auto& p : sphere_cloud(r, rings, segments)) vertices.push_back(pcl::PointXYZ(p.x, p.y, p.z));
+  vertices.push_back(pcl::PointXYZ(0, 0, -r));
+  const auto at = [&](int ring, int segment) {  // ring 1..rings-1
+    return static_cast<pcl::index_t>(1 + (ring - 1) * segments + (segment % segments));
+  };
+  pcl::PolygonMesh mesh;
+  const auto add = [&](pcl::index_t a, pcl::index_t b, pcl::index_t c) {
+    pcl::Vertices v;
+    v.vertices = {a, b, c};
+    mesh.polygons.push_back(v);
+  };
+  const pcl::index_t south = static_cast<pcl::index_t>(vertices.size() - 1);
+  for (int j = 0; j < segments; ++j) {
+    add(0, at(1, j), at(1, j + 1));
+    add(south, at(rings - 1, j + 1), at(rings - 1, j));
+    for (int i = 1; i + 1 < rings; ++i) {
+      add(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      add(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  }
+  pcl::toPCLPointCloud2(vertices, mesh.cloud);
+  return mesh;
+}
+
+Eigen::Vector3d point(vtkPolyData* p, vtkIdType i) {
+  double x[3];
+  p->GetPoint(i, x);
+  return {x[0], x[1], x[2]};
+}
+
+Eigen::Vector3d normal(vtkPolyData* p, vtkIdType i) {
+  double n[3];
+  p->GetPointData()->GetNormals()->GetTuple(i, n);
+  return {n[0], n[1], n[2]};
+}
+
+// Smallest n . x / |x| over the surfels: 1 for exact outward normals of a sphere at the origin.
+double worst_radial_alignment(vtkPolyData* p) {
+  double worst = 1.0;
+  for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
+    worst = std::min(worst, normal(p, i).dot(point(p, i).normalized()));
+  return worst;
+}
+
+TEST_F(PclGlue, PcdInEveryEncodingGivesTheSameSurfelsForEveryPointType) {
+  const auto cloud = sphere_cloud(10.0f, 30, 60);
+  pcl::PCDWriter writer;
+  writer.writeASCII(file("a.pcd"), cloud);
+  writer.writeBinary(file("b.pcd"), cloud);
+  writer.writeBinaryCompressed(file("c.pcd"), cloud);
+  for (const char* name : {"a.pcd", "b.pcd", "c.pcd"}) {
+    const auto rgb = sss::makeSurfels(sss::loadPointCloud<pcl::PointXYZRGB>(file(name)));
+    const auto xyz = sss::makeSurfels(sss::loadPointCloud<pcl::PointXYZ>(file(name)));
+    const auto normal_type = sss::makeSurfels(sss::loadPointCloud<pcl::PointNormal>(file(name)));
+    const auto both = sss::makeSurfels(sss::loadPointCloud<pcl::PointXYZRGBNormal>(file(name)));
+    const auto surfel = sss::makeSurfels(sss::loadPointCloud<pcl::PointSurfel>(file(name)));
+    for (const auto* s : {&rgb, &xyz, &normal_type, &both, &surfel}) {
+      EXPECT_EQ(s->size(), cloud.size()) << name;
+      EXPECT_TRUE(s->estimated_normals) << name;  // the file has none
+      EXPECT_GT(worst_radial_alignment(s->polydata), 0.99) << name;
+      EXPECT_DOUBLE_EQ(s->radius, xyz.radius) << name;
+    }
+    EXPECT_TRUE(rgb.has_colours);
+    EXPECT_TRUE(both.has_colours);
+    EXPECT_TRUE(surfel.has_colours);
+    EXPECT_FALSE(xyz.has_colours);  // PointXYZ cannot keep them
+    EXPECT_FALSE(normal_type.has_colours);
+  }
+}
+
+TEST_F(PclGlue, NormalsInTheFileAreKeptAsGiven) {
+  pcl::PointCloud<pcl::PointNormal> cloud;
+  for (const auto& p : sphere_cloud(5.0f, 20, 40)) {
+    pcl::PointNormal q;
+    q.x = p.x, q.y = p.y, q.z = p.z;
+    q.getNormalVector3fMap() = -q.getVector3fMap().normalized();  // inward on purpose
+    cloud.push_back(q);
+  }
+  pcl::io::savePCDFileBinary(file("n.pcd"), cloud);
+  const auto loaded = sss::loadPointCloud<pcl::PointXYZRGBNormal>(file("n.pcd"));
+  EXPECT_TRUE(loaded.has_normals);
+  const auto s = sss::makeSurfels(loaded);
+  EXPECT_FALSE(s.estimated_normals);
+  for (vtkIdType i = 0; i < s.polydata->GetNumberOfPoints(); ++i)
+    ASSERT_NEAR(normal(s.polydata, i).dot(point(s.polydata, i).normalized()), -1.0, 1e-6);
+}
+
+TEST_F(PclGlue, OrganisedCloudKeepsItsShapeAndDropsItsHoles) {
+  pcl::PointCloud<pcl::PointXYZ> grid(40, 30);  // a plane at z = 2 seen from the origin
+  std::size_t holes = 0;
+  for (int v = 0; v < 30; ++v)
+    for (int u = 0; u < 40; ++u) {
+      auto& p = grid.at(u, v);
+      const bool hole = (u * 7 + v * 3) % 11 == 0;
+      holes += hole;
+      const float nan = std::numeric_limits<float>::quiet_NaN();
+      p = hole ? pcl::PointXYZ(nan, nan, nan) : pcl::PointXYZ(0.01f * u, 0.01f * v, 2.0f);
+    }
+  grid.is_dense = false;
+  pcl::io::savePCDFileBinaryCompressed(file("o.pcd"), grid);
+  const auto loaded = sss::loadPointCloud<pcl::PointXYZ>(file("o.pcd"));
+  EXPECT_EQ(loaded.cloud->width, 40u);
+  EXPECT_EQ(loaded.cloud->height, 30u);
+  const auto s = sss::makeSurfels(loaded);
+  EXPECT_EQ(s.nonfinite_points, holes);
+  EXPECT_EQ(s.size(), 1200 - holes);
+  for (vtkIdType i = 0; i < s.polydata->GetNumberOfPoints(); ++i)  // towards the sensor at 0
+    ASSERT_LT(normal(s.polydata, i).z(), -0.999);
+}
+
+TEST_F(PclGlue, RadiusComesFromTheSpacing) {
+  pcl::PointCloud<pcl::PointXYZ> plane;
+  const float h = 0.25f;
+  for (int i = 0; i < 50; ++i)
+    for (int j = 0; j < 50; ++j) plane.push_back(pcl::PointXYZ(h * i, h * j, 0.0f));
+  sss::SurfelOptions options;
+  options.radius_scale = 1.0;
+  const auto s = sss::makeSurfels(plane, options);
+  EXPECT_NEAR(s.spacing, h, 1e-6);
+  EXPECT_NEAR(s.radius, h, 1e-6);
+  EXPECT_NEAR(sss::makeSurfels(plane).radius, 1.5 * h, 1e-6);  // the default scale
+  plane.push_back(plane[0]);  // a duplicate does not make the spacing zero
+  EXPECT_NEAR(sss::makeSurfels(plane, options).spacing, h, 1e-6);
+}
+
+TEST_F(PclGlue, ColoursBecomeTheAlbedoArray) {
+  const auto cloud = sphere_cloud(3.0f, 10, 20);
+  const auto s = sss::makeSurfels(cloud);
+  auto* colours = vtkUnsignedCharArray::SafeDownCast(s.polydata->GetPointData()->GetScalars());
+  ASSERT_NE(colours, nullptr);
+  ASSERT_EQ(colours->GetNumberOfComponents(), 3);
+  for (vtkIdType i = 0; i < colours->GetNumberOfTuples(); ++i) {
+    EXPECT_EQ(colours->GetValue(3 * i), cloud[i].r);
+    EXPECT_EQ(colours->GetValue(3 * i + 1), cloud[i].g);
+    EXPECT_EQ(colours->GetValue(3 * i + 2), cloud[i].b);
+  }
+}
+
+TEST_F(PclGlue, PlyPointsMeshVerticesAndGzip) {
+  pcl::io::savePLYFileASCII(file("p.ply"), sphere_cloud(10.0f, 20, 40));
+  const auto points = sss::loadPointCloud<pcl::PointXYZRGB>(file("p.ply"));
+  EXPECT_EQ(points.cloud->size(), 19u * 40u);
+  EXPECT_TRUE(points.has_colours);
+
+  const pcl::PolygonMesh mesh = sphere_mesh(10.0f, 20, 40);
+  pcl::io::savePLYFile(file("m.ply"), mesh);
+  const auto vertices = sss::loadPointCloud<pcl::PointNormal>(file("m.ply"));
+  EXPECT_EQ(vertices.cloud->size(), 19u * 40u + 2u);
+  EXPECT_TRUE(vertices.has_normals);  // from the faces
+  const auto s = sss::makeSurfels(vertices);
+  EXPECT_FALSE(s.estimated_normals);
+  EXPECT_GT(worst_radial_alignment(s.polydata), 0.98);
+
+  {  // the same file gzipped
+    std::ifstream in(file("m.ply"), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    gzFile out = gzopen(file("m.ply.gz").c_str(), "wb");
+    gzwrite(out, bytes.data(), static_cast<unsigned>(bytes.size()));
+    gzclose(out);
+  }
+  const auto inflated = sss::makeSurfels(sss::loadPointCloud<pcl::PointNormal>(file("m.ply.gz")));
+  ASSERT_EQ(inflated.size(), s.size());
+  for (vtkIdType i = 0; i < s.polydata->GetNumberOfPoints(); ++i)
+    ASSERT_EQ(point(inflated.polydata, i), point(s.polydata, i));
+}
+
+TEST_F(PclGlue, MeshSamplingIsUniformOnTheSurface) {
+  const float r = 10.0f;
+  pcl::io::savePLYFile(file("m.ply"), sphere_mesh(r, 40, 80));
+  sss::LoadOptions options;
+  options.mesh_samples = 20000;
+  const auto loaded = sss::loadPointCloud<pcl::PointXYZRGBNormal>(file("m.ply"), options);
+  ASSERT_EQ(loaded.cloud->size(), 20000u);
+  EXPECT_TRUE(loaded.has_normals);
+  EXPECT_FALSE(loaded.has_colours);  // the mesh has none
+  // On the faceted sphere: between the inscribed faces' depth and r; normals are face normals.
+  const double chord_depth = r * (1.0 - std::cos(kPi / 40.0));
+  std::size_t upper = 0;
+  for (const auto& p : *loaded.cloud) {
+    const Eigen::Vector3f x = p.getVector3fMap();
+    ASSERT_LE(x.norm(), r + 1e-4);
+    ASSERT_GE(x.norm(), r - chord_depth - 1e-4);
+    ASSERT_GT(p.getNormalVector3fMap().dot(x.normalized()), 0.99);
+    upper += x.z() > 0.5f * r;
+  }
+  // Area above z = r/2 on a sphere is a quarter of the whole: 5000 expected, binomial sd 61.
+  EXPECT_NEAR(static_cast<double>(upper), 5000.0, 4 * 61.0);
+}
+
+void expect_input_error(const std::function<void()>& load, const std::string& words) {
+  try {
+    load();
+    ADD_FAILURE() << "no error; expected one saying \"" << words << "\"";
+  } catch (const sss::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(PclGlue, BadInputGivesOneClearError) {
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("absent.pcd")); },
+                     "absent.pcd: cannot be opened");
+  std::ofstream(file("cloud.xyz")) << "1 2 3\n";
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("cloud.xyz")); },
+                     "unknown extension");
+  std::ofstream(file("garbage.pcd")) << "this is not a point cloud\n";
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("garbage.pcd")); },
+                     "garbage.pcd: not a readable PCD file");
+  std::ofstream(file("garbage.ply")) << "ply\nnonsense\n";
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("garbage.ply")); },
+                     "garbage.ply: not a readable PLY file");
+  std::ofstream(file("garbage.ply.gz")) << "not gzip either";
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("garbage.ply.gz")); },
+                     "garbage.ply.gz");
+  std::ofstream(file("empty.pcd"))
+    << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 0\nHEIGHT 1\n"
+       "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 0\nDATA ascii\n";
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("empty.pcd")); },
+                     "empty.pcd: the file has no points");
+
+  pcl::io::savePCDFileBinary(file("cut.pcd"), sphere_cloud(1.0f, 30, 60));
+  fs::resize_file(file("cut.pcd"), fs::file_size(file("cut.pcd")) / 2);
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("cut.pcd")); },
+                     "cut.pcd: not a readable PCD file");
+  pcl::io::savePLYFileBinary(file("cut.ply"), sphere_cloud(1.0f, 30, 60));
+  fs::resize_file(file("cut.ply"), fs::file_size(file("cut.ply")) / 2);
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("cut.ply")); },
+                     "cut.ply: not a readable PLY file");
+
+  pcl::PointCloud<pcl::PointXYZ> nan_cloud;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int i = 0; i < 100; ++i) nan_cloud.push_back(pcl::PointXYZ(nan, nan, nan));
+  nan_cloud.is_dense = false;
+  pcl::io::savePCDFileBinary(file("nan.pcd"), nan_cloud);
+  expect_input_error(
+    [&] { sss::makeSurfels(sss::loadPointCloud<pcl::PointXYZ>(file("nan.pcd"))); },
+    "nan.pcd: no point has a finite position (100 points");
+
+  pcl::PointCloud<pcl::PointXYZ> two;
+  two.push_back(pcl::PointXYZ(0, 0, 0));
+  two.push_back(pcl::PointXYZ(1, 0, 0));
+  pcl::io::savePCDFileASCII(file("two.pcd"), two);
+  expect_input_error(
+    [&] { sss::makeSurfels(sss::loadPointCloud<pcl::PointXYZ>(file("two.pcd"))); },
+    "two.pcd: 2 finite points, too few to estimate normals");
+
+  pcl::PointCloud<pcl::PointXYZ> line;  // collinear: no plane through any neighbourhood
+  for (int i = 0; i < 50; ++i) line.push_back(pcl::PointXYZ(0.1f * i, 0, 0));
+  expect_input_error([&] { sss::makeSurfels(line); }, "too few neighbours");
+
+  pcl::PointCloud<pcl::PointXYZ> one_place(20, 1, pcl::PointXYZ(1, 2, 3));
+  expect_input_error([&] { sss::makeSurfels(one_place); }, "lie at one place");
+}
+
+TEST(PclGlueScans, SharedCloudsLoad) {
+  const std::string organised = sss::test::shared_data("milk_cartoon_all_small_clorox.pcd");
+  const std::string with_normals = sss::test::shared_data("bun0.pcd");
+  if (organised.empty() || with_normals.empty())
+    GTEST_SKIP() << "milk_cartoon_all_small_clorox.pcd or bun0.pcd is not in the shared data folder";
+  const auto kinect = sss::loadPointCloud<pcl::PointXYZRGB>(organised);
+  EXPECT_EQ(kinect.cloud->height, 480u);
+  const auto s = sss::makeSurfels(kinect);
+  std::printf("%s\n%s\n", kinect.description.c_str(), s.summary().c_str());
+  EXPECT_EQ(s.nonfinite_points, 307200u - 241407u);  // the shared data README's counts
+  EXPECT_TRUE(s.has_colours);
+  EXPECT_LT(s.points_without_normal, 241407u / 1000);  // isolated points only
+  const auto bunny = sss::loadPointCloud<pcl::PointNormal>(with_normals);
+  EXPECT_TRUE(bunny.has_normals);
+  EXPECT_FALSE(sss::makeSurfels(bunny).estimated_normals);
+}
+
+}  // namespace
