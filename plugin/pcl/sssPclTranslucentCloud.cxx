@@ -144,7 +144,7 @@ void TranslucentCloud::setColoursAsAlbedo(bool on) {
 void TranslucentCloud::setLights(const std::vector<Eigen::Vector3d>& towards_light,
                                  double irradiance) {
   for (const auto& renderer : renderers_) {
-    for (const auto& light : lights_) renderer->RemoveLight(light);
+    renderer->RemoveAllLights();  // PCLVisualizer's own light included
     renderer->AutomaticLightCreationOff();
   }
   lights_.clear();

@@ -1,0 +1,149 @@
+// The one-call integration in PCLVisualizer's own (offscreen) window, under the Xvfb server
+// that CTest starts for this test: the same B as the plain VTK path, a lit image, and a handle
+// that changes material, quality, lights and removes the cloud.
+#include <gtest/gtest.h>
+#include <pcl/point_types.h>
+#include <pcl/visualization/pcl_visualizer.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSubsurfacePass.h>
+#include <vtkSurfelMapper.h>
+#include <vtkTranslucentMaterial.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cmath>
+
+#include "sssPclTranslucentCloud.h"
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A sphere of radius 10 (mm) on a latitude-longitude lattice.
+pcl::PointCloud<pcl::PointXYZ> sphere(int rings, int segments) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = kPi * i / rings, phi = 2.0 * kPi * j / segments;
+      cloud.push_back(pcl::PointXYZ(10 * std::sin(theta) * std::cos(phi),
+                                    10 * std::sin(theta) * std::sin(phi), 10 * std::cos(theta)));
+    }
+  return cloud;
+}
+
+std::vector<float> radiance(vtkSubsurfacePass* pass, vtkActor* actor) {
+  vtkNew<vtkFloatArray> B;
+  EXPECT_TRUE(pass->GetSurfelRadiance(actor, B));
+  return std::vector<float>(B->GetPointer(0), B->GetPointer(0) + 3 * B->GetNumberOfTuples());
+}
+
+// B of the same surfels, material and light set up by hand in a plain VTK window (an X window
+// here too: one thread cannot switch between GLX and EGL contexts).
+std::vector<float> plain_vtk_radiance(const sss::Surfels& surfels, const Eigen::Vector3d& towards_light) {
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(64, 64);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetPosition(towards_light.data());
+  renderer->AddLight(light);
+  vtkNew<vtkSurfelMapper> mapper;
+  mapper->SetInputData(surfels.polydata);
+  mapper->SetRadius(surfels.radius);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkTranslucentMaterial> marble;
+  marble->ApplyTo(actor);
+  renderer->AddActor(actor);
+  vtkNew<vtkSubsurfacePass> pass;
+  renderer->SetPass(pass);
+  renderer->ResetCamera();
+  window->Render();
+  return radiance(pass, actor);
+}
+
+double largest_difference(const std::vector<float>& a, const std::vector<float>& b) {
+  double worst = 0.0, peak = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    worst = std::max(worst, std::abs(double(a[i]) - b[i]));
+    peak = std::max(peak, double(b[i]));
+  }
+  return worst / peak;
+}
+
+// Mean of the brightest channel over the window's pixels.
+double mean_brightness(vtkRenderWindow* window) {
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto* pixels = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  double sum = 0.0;
+  const int components = pixels->GetNumberOfComponents();
+  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+    sum += std::max({pixels->GetValue(components * i), pixels->GetValue(components * i + 1),
+                     pixels->GetValue(components * i + 2)});
+  return sum / static_cast<double>(pixels->GetNumberOfTuples());
+}
+
+TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
+  pcl::visualization::PCLVisualizer viewer("sss one-call test", false);
+  viewer.getRenderWindow()->SetOffScreenRendering(1);
+  viewer.setSize(240, 240);
+  viewer.setBackgroundColor(0, 0, 0);
+  const Eigen::Vector3d behind(0.3, 0.2, -1.0);
+  viewer.getRenderWindow()->Render();
+  const double empty = mean_brightness(viewer.getRenderWindow());  // PCL's frame-rate text
+
+  const sss::TranslucentCloud::Ptr handle =
+    sss::addTranslucentCloud(viewer, sphere(40, 80), "sphere");
+  ASSERT_TRUE(handle);
+  EXPECT_TRUE(viewer.contains("sphere"));
+  EXPECT_THROW(sss::addTranslucentCloud(viewer, sphere(4, 8), "sphere"), std::invalid_argument);
+  handle->setLights({behind});
+  viewer.setCameraPosition(0, 0, 60, 0, 0, 0, 0, 1, 0);
+  viewer.getRenderWindow()->Render();
+  std::printf("%s; %s\n", handle->surfels().summary().c_str(), handle->settingsLine().c_str());
+
+  const std::vector<float> B = radiance(handle->pass(), handle->actor());
+  const double difference = largest_difference(B, plain_vtk_radiance(handle->surfels(), behind));
+  std::printf("largest B difference to the plain VTK path: %.2e of the peak\n", difference);
+  EXPECT_LT(difference, 1e-5);  // the same shaders on the same rasteriser: float rounding only
+
+  handle->autoExpose();
+  viewer.getRenderWindow()->Render();
+  const double lit = mean_brightness(viewer.getRenderWindow());
+  std::printf("mean brightness: %.2f empty, %.2f with the sphere\n", empty, lit);
+  EXPECT_GT(lit, empty + 5.0);  // the sphere covers about a fifth of the window and glows
+
+  ASSERT_TRUE(handle->setMaterial("ketchup"));
+  EXPECT_FALSE(handle->setMaterial("cheese"));
+  viewer.getRenderWindow()->Render();
+  const std::vector<float> ketchup = radiance(handle->pass(), handle->actor());
+  double red = 0, blue = 0;  // ketchup's blue albedo is 0.02, its red 0.75 (Rd 100x apart)
+  for (std::size_t i = 0; i < ketchup.size(); i += 3) red += ketchup[i], blue += ketchup[i + 2];
+  std::printf("ketchup: summed B red / blue = %.1f\n", red / blue);
+  EXPECT_GT(red, 20.0 * blue);
+  handle->setQuality(sss::Quality::Interactive);
+  EXPECT_EQ(handle->pass()->GetKernelStrategy(), vtkSubsurfacePass::PAPER);
+
+  EXPECT_TRUE(viewer.removeShape("sphere"));
+  EXPECT_FALSE(viewer.contains("sphere"));
+  handle->remove();
+  vtkRenderer* renderer = viewer.getRendererCollection()->GetFirstRenderer();
+  EXPECT_EQ(renderer->GetPass(), nullptr);
+  viewer.getRenderWindow()->Render();
+  EXPECT_NEAR(mean_brightness(viewer.getRenderWindow()), empty, 0.05);
+}
+
+}  // namespace
