@@ -285,19 +285,7 @@ int run(const Options& o) {
   vtkNew<vtkFloatArray> B;
   if (!pass->GetSurfelRadiance(actor, B)) throw std::runtime_error("no radiance was computed");
   if (o.exposure == 0.0) {  // automatic: the 99.5th percentile of the visible Lo maps to white
-    std::vector<float> visible;
-    vtkFloatArray* linear = pass->GetLinearImage();
-    for (vtkIdType p = 0; p < linear->GetNumberOfTuples(); ++p) {
-      const float m = std::max({linear->GetValue(3 * p), linear->GetValue(3 * p + 1),
-                                linear->GetValue(3 * p + 2)});
-      if (m > 0.0f) visible.push_back(m);
-    }
-    double white = 0.0;
-    if (!visible.empty()) {
-      auto at = visible.begin() + static_cast<std::ptrdiff_t>(0.995 * (visible.size() - 1));
-      std::nth_element(visible.begin(), at, visible.end());
-      white = *at;
-    }
+    const double white = pass->GetLinearImageQuantile(0.995);
     pass->SetExposure(white > 0.0 ? 1.0 / white : 1.0);
   }
   camera->Modified();  // a camera-only change: step 3 alone

@@ -469,6 +469,29 @@ vtkFloatArray* vtkSubsurfacePass::GetLinearImage()
   return this->Impl->Linear;
 }
 
+double vtkSubsurfacePass::GetLinearImageQuantile(double q)
+{
+  vtkFloatArray* linear = this->Impl->Linear;
+  std::vector<float> lit;
+  for (vtkIdType p = 0; linear && p < linear->GetNumberOfTuples(); ++p)
+  {
+    const float* Lo = linear->GetPointer(3 * p);
+    const float largest = std::max({ Lo[0], Lo[1], Lo[2] });
+    if (largest > 0.0f)
+    {
+      lit.push_back(largest);
+    }
+  }
+  if (lit.empty())
+  {
+    return 0.0;
+  }
+  const auto at = lit.begin() +
+    static_cast<std::ptrdiff_t>(std::clamp(q, 0.0, 1.0) * static_cast<double>(lit.size() - 1));
+  std::nth_element(lit.begin(), at, lit.end());
+  return *at;
+}
+
 bool vtkSubsurfacePass::GetSurfelRadiance(vtkActor* actor, vtkFloatArray* B)
 {
   auto found = this->Impl->States.find(actor);

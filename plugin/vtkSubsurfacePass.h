@@ -123,6 +123,13 @@ public:
   int GetLinearImageHeight() const { return this->LinearHeight; }
 
   /**
+   * The q-quantile (q in [0, 1]) of the largest channel of Lo over the translucent pixels of
+   * the last captured frame; 0 when nothing was captured. 1 / GetLinearImageQuantile(0.995) is
+   * an exposure that shows the visible surface without clipping more than 0.5 % of it.
+   */
+  double GetLinearImageQuantile(double q);
+
+  /**
    * B (eq. 17, radiance before the exit Fresnel term) of each input point of a translucent
    * actor rendered in the last frame, in input order; NaN for points left out. Returns false
    * when the actor has no result.

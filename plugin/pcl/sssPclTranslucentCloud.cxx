@@ -55,11 +55,6 @@ bool has_translucent_actor(vtkRenderer* renderer) {
   return false;
 }
 
-// Ft at normal incidence, 1 - ((eta - 1) / (eta + 1))^2 (eq. 4 at theta = 0).
-double head_on_transmittance(double eta) {
-  const double r = (eta - 1.0) / (eta + 1.0);
-  return 1.0 - r * r;
-}
 
 }  // namespace
 
@@ -169,24 +164,17 @@ void TranslucentCloud::setExposure(double exposure) {
   for (const auto& pass : passes_) pass->SetExposure(exposure);
 }
 
+double TranslucentCloud::exposure() const { return passes_.front()->GetExposure(); }
+
 double TranslucentCloud::autoExpose() {
-  vtkNew<vtkFloatArray> B;
-  if (!pass()->GetSurfelRadiance(actor_, B)) {
-    viewer_.getRenderWindow()->Render();
-    if (!pass()->GetSurfelRadiance(actor_, B)) return pass()->GetExposure();
-  }
-  std::vector<float> brightest;
-  brightest.reserve(static_cast<std::size_t>(B->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < B->GetNumberOfTuples(); ++i) {
-    const float* b = B->GetPointer(3 * i);
-    brightest.push_back(std::max({b[0], b[1], b[2]}));
-  }
-  if (brightest.empty()) return pass()->GetExposure();
-  const std::size_t k = std::min(brightest.size() - 1, brightest.size() * 995 / 1000);
-  std::nth_element(brightest.begin(), brightest.begin() + static_cast<long>(k), brightest.end());
-  const double Lo = brightest[k] * head_on_transmittance(material_->GetEta());
-  if (Lo > 0.0 && std::isfinite(Lo)) setExposure(1.0 / Lo);
-  return pass()->GetExposure();
+  vtkSubsurfacePass* p = pass();
+  const bool capturing = p->GetCaptureLinearImage();
+  p->CaptureLinearImageOn();
+  viewer_.getRenderWindow()->Render();
+  const double white = p->GetLinearImageQuantile(0.995);
+  p->SetCaptureLinearImage(capturing);
+  if (white > 0.0 && std::isfinite(white)) setExposure(1.0 / white);
+  return exposure();
 }
 
 void TranslucentCloud::setVisible(bool visible) { actor_->SetVisibility(visible); }

@@ -67,9 +67,10 @@ class TranslucentCloud {
   void setLights(const std::vector<Eigen::Vector3d>& towards_light, double irradiance = 1.0);
   void setQuality(Quality quality);
   Quality quality() const { return quality_; }
-  // sRGB(clamp(exposure * Lo)); autoExpose() sets it so that the 99.5th percentile of the
-  // surfels' head-on radiance is white (it renders once if nothing was rendered yet).
+  // sRGB(clamp(exposure * Lo)); autoExpose() renders once and sets it so that the 99.5th
+  // percentile of the visible translucent pixels' radiance is white.
   void setExposure(double exposure);
+  double exposure() const;
   double autoExpose();
   void setVisible(bool visible);
   // Takes the actor out of the renderers (and the pass, when no other translucent cloud uses
