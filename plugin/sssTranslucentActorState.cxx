@@ -605,6 +605,8 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     }
     program->SetUniform3f("irradianceArea", power);
     program->SetUniformi("albedoFromColour", albedo_from_colour ? 1 : 0);
+    const float albedo_as_is[3] = { 1.0f, 0.0f, 1.0f };  // ambient only: colour = colourMC
+    program->SetUniform3f("ambientDiffuse", albedo_as_is);
     const float axis_u[3] = { float(map.u.x()), float(map.u.y()), float(map.u.z()) };
     const float axis_v[3] = { float(map.v.x()), float(map.v.y()), float(map.v.z()) };
     program->SetUniform3f("mapAxisU", axis_u);

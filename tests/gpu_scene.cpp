@@ -4,6 +4,9 @@
 #include <vtkLight.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
 
 namespace sss::test {
 
@@ -20,6 +23,13 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud, const Eigen::
   auto polydata = vtkSmartPointer<vtkPolyData>::New();
   polydata->SetPoints(points);
   polydata->GetPointData()->SetNormals(normals);
+  if (!cloud.albedo.empty()) {  // albedo as 8-bit colours, the form scans carry it in
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetNumberOfComponents(3);
+    for (const Rgb& a : cloud.albedo)
+      colours->InsertNextTuple3(std::round(255 * a[0]), std::round(255 * a[1]), std::round(255 * a[2]));
+    polydata->GetPointData()->SetScalars(colours);
+  }
   return polydata;
 }
 
@@ -31,11 +41,13 @@ GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
   renderer->AutomaticLightCreationOff();
   mapper->SetInputData(to_polydata(cloud, shift));
   mapper->SetRadius(cloud.radius);
+  mapper->SetScalarVisibility(!cloud.albedo.empty());
   actor->SetMapper(mapper);
   material->SetSigmaA(m.sigma_a[0], m.sigma_a[1], m.sigma_a[2]);
   material->SetSigmaSPrime(m.sigma_s_prime[0], m.sigma_s_prime[1], m.sigma_s_prime[2]);
   material->SetEta(m.eta[0]);
   material->SetMillimetresPerUnit(m.mm_per_unit);
+  material->SetColoursAsAlbedo(!cloud.albedo.empty());
   material->ApplyTo(actor);
   renderer->AddActor(actor);
   renderer->SetPass(pass);

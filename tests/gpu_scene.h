@@ -29,7 +29,8 @@ struct GpuScene {
   vtkNew<vtkSubsurfacePass> pass;
 
   // The cloud (validated, scene units) shifted by `shift`, lit by `lights`, seen along
-  // `view` (from the object towards the camera), orthographic.
+  // `view` (from the object towards the camera), orthographic. A cloud with albedo passes it
+  // as 8-bit point colours with ColoursAsAlbedo on.
   GpuScene(const SurfelCloud& cloud, const Material& m, const std::vector<DirectionalLight>& lights,
            const Eigen::Vector3d& view = Eigen::Vector3d(0, 0, 1), int size = 256,
            const Eigen::Vector3d& shift = Eigen::Vector3d::Zero());

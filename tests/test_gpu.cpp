@@ -84,6 +84,39 @@ TEST(GpuCaching, CameraOnlyChangeSkipsStepsOneAndTwo) {
   EXPECT_EQ(scene.pass->GetIlluminationRuns(), 3) << "a material change must re-run steps 1-2";
 }
 
+// Colours as albedo scale the light entering each point (eq. 15 times the albedo): a uniform
+// albedo scales B channel by channel, and a two-tone one matches the CPU reference.
+TEST(GpuAlbedo, ColoursScaleTheLightEnteringEachPoint) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  const Material milk = Material::preset("skimmilk");
+  const std::vector<DirectionalLight> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
+  const std::vector<Rgb> plain = GpuScene(sphere, milk, light).render_B();
+  const Rgb tint{51 / 255.0, 102 / 255.0, 1.0};  // exact in 8 bits
+  SurfelCloud tinted = sphere;
+  tinted.albedo.assign(sphere.size(), tint);
+  const std::vector<Rgb> B = GpuScene(tinted, milk, light).render_B();
+  ASSERT_EQ(B.size(), plain.size());
+  double peak = 0.0, worst = 0.0;
+  for (const Rgb& b : plain) peak = std::max({peak, b[0], b[1], b[2]});
+  for (std::size_t i = 0; i < B.size(); ++i)
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(B[i][c] - tint[c] * plain[i][c]));
+  std::printf("[ gpu albedo ] uniform tint: largest |B - albedo B_plain| %.2e of the peak\n",
+              worst / peak);
+  EXPECT_LT(worst / peak, 1e-5);
+
+  SurfelCloud two_tone = sphere;
+  for (const Eigen::Vector3d& p : sphere.positions)
+    two_tone.albedo.push_back(p.x() > 0 ? Rgb{1.0, 1.0, 1.0} : Rgb{0.2, 0.6, 1.0});
+  const std::vector<Rgb> gpu = GpuScene(two_tone, milk, light).render_B();
+  const SurfelRadiance reference = render_reference(two_tone, milk, light);
+  const ErrorStats e = compare_radiance(gpu, reference.B);
+  std::printf("[ gpu albedo ] two-tone vs reference: mean %.3f %% p99 %.3f %% max %.3f %%\n",
+              100 * e.mean, 100 * e.p99, 100 * e.max);
+  EXPECT_LT(e.mean, 0.005);
+  EXPECT_LT(e.p99, 0.03);
+}
+
 TEST(GpuBadInput, NoLightGivesBlackNotNaN) {
   SurfelCloud sphere = make_sphere(10.0, 0.5);
   sphere.validate();
