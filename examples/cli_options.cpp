@@ -86,9 +86,10 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
                             the 99.5th percentile of the visible Lo maps to white)
-  --radius-scale F          disc radius over the input's own (0.8 x mean edge for meshes,
-                            mean point spacing for PCD clouds) (default 1.5: closes the
-                            gaps that grazing discs leave)
+  --radius-scale F          disc radius over the input's mean point spacing (default 1.5:
+                            closes the gaps that grazing discs leave)
+  --samples N               for a PLY mesh: N points sampled uniformly on its surface instead
+                            of its vertices, as pcl_mesh_sampling does (default 0: vertices)
   --frames N                after the outputs, time N frames with the camera orbiting (light
                             static), N with the light moving, and N of plain VTK points
                             (vertex cells, point size 2) of the same cloud (default 0)
@@ -179,6 +180,11 @@ Options parse(int argc, char** argv) {
       o.radius_scale = number(flag, value());
       if (o.radius_scale <= 0 || o.radius_scale > 10)
         throw std::invalid_argument("--radius-scale: needs a value in (0, 10]");
+    } else if (flag == "--samples") {
+      const double n = number(flag, value());
+      if (n < 0 || n > 1e9 || n != std::floor(n))
+        throw std::invalid_argument("--samples: needs a whole number from 0 to 1e9");
+      o.mesh_samples = static_cast<std::size_t>(n);
     } else if (flag == "--frames") {
       const double n = number(flag, value());
       if (n < 0 || n > 100000 || n != std::floor(n))

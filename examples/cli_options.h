@@ -1,6 +1,8 @@
 // Command-line parsing for sss_render: every flag, its default and its unit in one table.
 #pragma once
 
+#include <cstddef>
+
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -35,6 +37,7 @@ struct Options {
   double texel_per_z_r = 0.25;
   int frames = 0;
   double radius_scale = 1.5;
+  std::size_t mesh_samples = 0;
   bool help = false;
 };
 

@@ -1,7 +1,8 @@
-// sss_render's input: a .ply / .ply.gz mesh (its vertices become surfels) or a .pcd cloud
-// (normals from the file, or estimated with PCL), as a validated surfel cloud.
+// sss_render's input: any file the PCL glue reads (PCD, PLY, PLY.gz; a mesh's vertices or
+// samples of its surface) as a validated surfel cloud for the CPU reference and the GPU path.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "surfel_cloud.h"
@@ -9,12 +10,13 @@
 namespace sss::cli {
 
 struct LoadedCloud {
-  SurfelCloud cloud;       // scene units, validated; radius 0 for "from the spacing"
+  SurfelCloud cloud;        // scene units, validated; radius = mean point spacing
   std::string description;  // what was read and what was dropped
 };
 
-// Throws std::runtime_error naming the file and what is wrong (unreadable, unknown
-// extension, no points, no finite points, too few points for normals).
-LoadedCloud load_cloud(const std::string& path);
+// mesh_samples > 0 samples that many points on a PLY mesh's surface. Throws sss::InputError
+// naming the file and what is wrong (unreadable, unknown extension, no points, no finite
+// points, too few points for normals).
+LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples = 0);
 
 }  // namespace sss::cli

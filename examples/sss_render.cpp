@@ -11,6 +11,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkProperty.h>
 #include <vtkVertexGlyphFilter.h>
 #include <vtkLightCollection.h>
@@ -178,6 +179,17 @@ vtkSmartPointer<vtkPolyData> to_polydata(const sss::SurfelCloud& cloud) {
   auto polydata = vtkSmartPointer<vtkPolyData>::New();
   polydata->SetPoints(points);
   polydata->GetPointData()->SetNormals(normals);
+  if (!cloud.albedo.empty()) {  // the albedo back as the colours the mapper passes on
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetName("Colors");
+    colours->SetNumberOfComponents(3);
+    colours->SetNumberOfTuples(static_cast<vtkIdType>(cloud.size()));
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        colours->SetValue(static_cast<vtkIdType>(3 * i + c),
+                          static_cast<unsigned char>(std::lround(255.0 * cloud.albedo[i][c])));
+    polydata->GetPointData()->SetScalars(colours);
+  }
   return polydata;
 }
 
@@ -199,7 +211,7 @@ int run(const Options& o) {
     cloud = sss::make_torus(30.0, 7.0, 0.6);  // mm; its 7 mm tube glows when lit from behind
     cloud.validate();
   } else {
-    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(o.input);
+    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(o.input, o.mesh_samples);
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = std::move(loaded.cloud);
   }
@@ -227,7 +239,7 @@ int run(const Options& o) {
   vtkNew<vtkSurfelMapper> mapper;
   mapper->SetInputData(polydata);
   mapper->SetRadius(cloud.radius);
-  mapper->ScalarVisibilityOff();
+  mapper->SetScalarVisibility(!cloud.albedo.empty());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   vtkNew<vtkTranslucentMaterial> translucent;
@@ -236,6 +248,7 @@ int run(const Options& o) {
                               material.sigma_s_prime[2]);
   translucent->SetEta(material.eta[0]);
   translucent->SetMillimetresPerUnit(material.mm_per_unit);
+  translucent->SetColoursAsAlbedo(!cloud.albedo.empty());
   translucent->ApplyTo(actor);
   renderer->AddActor(actor);
 
