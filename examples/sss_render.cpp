@@ -38,6 +38,7 @@
 #include "procedural_shapes.h"
 #include "reference_renderer.h"
 #include "render_window.h"
+#include "translucent_scene.h"
 #include "stopwatch.h"
 
 namespace {
@@ -62,50 +63,6 @@ struct Timings {
   double load = 0, reference = 0, first_frame = 0, camera_frame = 0;
   double light_static = 0, light_moving = 0, plain_points = 0;  // mean seconds per frame
 };
-
-// Mean frame times: camera orbiting (light static), light moving, and plain VTK points of
-// the same cloud in the same window.
-void time_frames(int frames, vtkRenderWindow* window, vtkRenderer* renderer,
-                 vtkPolyData* polydata, Timings& t) {
-  sss::Stopwatch clock;
-  vtkCamera* camera = renderer->GetActiveCamera();
-  for (int i = 0; i < frames; ++i) {
-    camera->Azimuth(360.0 / frames);
-    window->Render();
-  }
-  t.light_static = clock.lap() / frames;
-  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
-  double p[3];
-  light->GetPosition(p);
-  for (int i = 0; i < frames; ++i) {
-    const double a = 2.0 * M_PI * (i + 1) / frames;
-    light->SetPosition(p[0] * std::cos(a) - p[1] * std::sin(a),
-                       p[0] * std::sin(a) + p[1] * std::cos(a), p[2]);
-    window->Render();
-  }
-  t.light_moving = clock.lap() / frames;
-  vtkNew<vtkRenderer> plain;
-  plain->SetActiveCamera(camera);
-  vtkNew<vtkVertexGlyphFilter> vertices;
-  vertices->SetInputData(polydata);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(vertices->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetPointSize(2);
-  plain->AddActor(actor);
-  window->RemoveRenderer(renderer);
-  window->AddRenderer(plain);
-  window->Render();  // upload outside the timing
-  clock.lap();
-  for (int i = 0; i < frames; ++i) {
-    camera->Azimuth(360.0 / frames);
-    window->Render();
-  }
-  t.plain_points = clock.lap() / frames;
-  window->RemoveRenderer(plain);
-  window->AddRenderer(renderer);
-}
 
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
                  vtkSubsurfacePass* pass, const Timings& t, const std::string& path) {
@@ -163,43 +120,6 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
   }
 }
 
-vtkSmartPointer<vtkPolyData> to_polydata(const sss::SurfelCloud& cloud) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.size()));
-  vtkNew<vtkFloatArray> normals;
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(static_cast<vtkIdType>(cloud.size()));
-  normals->SetName("Normals");
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    points->SetPoint(static_cast<vtkIdType>(i), cloud.positions[i].data());
-    normals->SetTuple3(static_cast<vtkIdType>(i), cloud.normals[i].x(), cloud.normals[i].y(),
-                       cloud.normals[i].z());
-  }
-  auto polydata = vtkSmartPointer<vtkPolyData>::New();
-  polydata->SetPoints(points);
-  polydata->GetPointData()->SetNormals(normals);
-  if (!cloud.albedo.empty()) {  // the albedo back as the colours the mapper passes on
-    vtkNew<vtkUnsignedCharArray> colours;
-    colours->SetName("Colors");
-    colours->SetNumberOfComponents(3);
-    colours->SetNumberOfTuples(static_cast<vtkIdType>(cloud.size()));
-    for (std::size_t i = 0; i < cloud.size(); ++i)
-      for (int c = 0; c < 3; ++c)
-        colours->SetValue(static_cast<vtkIdType>(3 * i + c),
-                          static_cast<unsigned char>(std::lround(255.0 * cloud.albedo[i][c])));
-    polydata->GetPointData()->SetScalars(colours);
-  }
-  return polydata;
-}
-
-int strategy_of(const std::string& name) {
-  if (name == "paper") return vtkSubsurfacePass::PAPER;
-  if (name == "grid") return vtkSubsurfacePass::GRID;
-  if (name == "surfel") return vtkSubsurfacePass::SURFEL;
-  return vtkSubsurfacePass::GRID_NEAR;
-}
-
 int run(const Options& o) {
   sss::Stopwatch clock;
   Timings timings;
@@ -222,38 +142,12 @@ int run(const Options& o) {
 
   vtkSmartPointer<vtkRenderWindow> window =
       sss::cli::make_render_window(o.backend, o.width, o.height);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  renderer->SetBackground(0, 0, 0);
-  renderer->AutomaticLightCreationOff();
-  for (const Eigen::Vector3d& d : o.light_dirs) {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPositional(false);
-    light->SetFocalPoint(0, 0, 0);
-    light->SetPosition(d.x(), d.y(), d.z());
-    light->SetIntensity(o.light_irradiance);
-    renderer->AddLight(light);
-  }
-  vtkSmartPointer<vtkPolyData> polydata = to_polydata(cloud);
-  vtkNew<vtkSurfelMapper> mapper;
-  mapper->SetInputData(polydata);
-  mapper->SetRadius(cloud.radius);
-  mapper->SetScalarVisibility(!cloud.albedo.empty());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkTranslucentMaterial> translucent;
-  translucent->SetSigmaA(material.sigma_a[0], material.sigma_a[1], material.sigma_a[2]);
-  translucent->SetSigmaSPrime(material.sigma_s_prime[0], material.sigma_s_prime[1],
-                              material.sigma_s_prime[2]);
-  translucent->SetEta(material.eta[0]);
-  translucent->SetMillimetresPerUnit(material.mm_per_unit);
-  translucent->SetColoursAsAlbedo(!cloud.albedo.empty());
-  translucent->ApplyTo(actor);
-  renderer->AddActor(actor);
-
-  vtkNew<vtkSubsurfacePass> pass;
-  pass->SetKernelStrategy(strategy_of(o.strategy));
+  std::vector<sss::DirectionalLight> lights;
+  for (const auto& d : o.light_dirs) lights.push_back({d, o.light_irradiance});
+  sss::cli::TranslucentScene scene(window, cloud, material, lights);
+  vtkSubsurfacePass* pass = scene.pass;
+  vtkActor* actor = scene.actor;
+  pass->SetKernelStrategy(sss::cli::strategy_of(o.strategy));
   pass->SetGridLevel(o.grid_level);
   pass->SetMaxMapSize(o.max_map_size);
   pass->SetOpeningAngle(o.opening_angle);
@@ -261,25 +155,13 @@ int run(const Options& o) {
   pass->SetTexelPerZr(o.texel_per_z_r);
   pass->SetExposure(o.exposure);
   pass->SetCaptureLinearImage(!o.linear_pfm.empty() || o.exposure == 0.0);
-  pass->MeasureStepTimesOn();
-  renderer->SetPass(pass);
-
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const Eigen::Vector3d c = cloud.bounds().center();
-  const Eigen::Vector3d v = o.view_dir.normalized();
-  camera->SetFocalPoint(c.x(), c.y(), c.z());
-  camera->SetPosition(c.x() + v.x(), c.y() + v.y(), c.z() + v.z());
-  camera->SetViewUp(o.up.x(), o.up.y(), o.up.z());
-  camera->SetParallelProjection(o.ortho);
-  renderer->ResetCamera();
-  camera->OrthogonalizeViewUp();
+  scene.aim_camera(cloud.bounds().center(), o.view_dir, o.up, o.ortho);
+  vtkCamera* camera = scene.renderer->GetActiveCamera();
 
   if (o.method == "reference") {
     sss::ReferenceSettings settings;
     settings.illumination.texel_per_z_r = o.texel_per_z_r;
     settings.progress = print_progress;
-    std::vector<sss::DirectionalLight> lights;
-    for (const auto& d : o.light_dirs) lights.push_back({d, o.light_irradiance});
     const sss::SurfelRadiance reference = sss::render_reference(cloud, material, lights, settings);
     vtkNew<vtkFloatArray> B;
     B->SetNumberOfComponents(3);
@@ -328,7 +210,8 @@ int run(const Options& o) {
     const Eigen::Vector3d eye_position(eye[0], eye[1], eye[2]);
     std::vector<sss::Rgb> Lo(cloud.size());
     for (std::size_t i = 0; i < cloud.size(); ++i) {
-      const Eigen::Vector3d wo = o.ortho ? v : (eye_position - cloud.positions[i]).normalized();
+      const Eigen::Vector3d wo =
+          o.ortho ? o.view_dir.normalized() : (eye_position - cloud.positions[i]).normalized();
       const double cos_o = std::fabs(cloud.normals[i].dot(wo));
       for (int ch = 0; ch < 3; ++ch)
         Lo[i][ch] = sss::fresnel_transmittance(material.eta[ch], cos_o) *
@@ -337,7 +220,9 @@ int run(const Options& o) {
     sss::cli::write_baked_ply(cloud.positions, Lo, o.bake_ply);
   }
   if (o.frames > 0) {
-    time_frames(o.frames, window, renderer, polydata, timings);
+    timings.light_static = sss::cli::time_light_static(scene, o.frames);
+    timings.light_moving = sss::cli::time_light_moving(scene, o.frames);
+    timings.plain_points = sss::cli::time_plain_points(scene, o.frames);
     std::fprintf(stderr,
                  "frames: light static %.4f s, light moving %.4f s, plain VTK points %.4f s "
                  "(ratios %.2f and %.2f)\n",

@@ -1,0 +1,57 @@
+// The scene sss_render and sss_bench draw: one surfel cloud as a translucent actor under
+// directional lights, with the subsurface pass, in a given window; and its frame timings.
+#pragma once
+
+#include <vtkActor.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkSubsurfacePass.h>
+#include <vtkSurfelMapper.h>
+#include <vtkTranslucentMaterial.h>
+
+#include <string>
+#include <vector>
+
+#include "illumination.h"
+#include "material.h"
+#include "surfel_cloud.h"
+
+namespace sss::cli {
+
+// Points, normals and (when the cloud has albedo) 8-bit colours.
+vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud);
+
+// "paper", "grid", "grid-near", "surfel" -> vtkSubsurfacePass::KernelStrategies and back.
+int strategy_of(const std::string& name);
+const char* strategy_name(int strategy);
+
+struct TranslucentScene {
+  vtkSmartPointer<vtkRenderWindow> window;
+  vtkSmartPointer<vtkPolyData> polydata;
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkSurfelMapper> mapper;
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkTranslucentMaterial> material;
+  vtkNew<vtkSubsurfacePass> pass;
+
+  // The cloud (validated) as a translucent actor lit by `lights`; colours as albedo when the
+  // cloud has albedo. The pass measures its step times exactly.
+  TranslucentScene(vtkRenderWindow* window, const SurfelCloud& cloud, const Material& m,
+                   const std::vector<DirectionalLight>& lights);
+  void set_material(const Material& m);
+  // Camera at the bounds centre looking back along `view_dir`, fitted to the cloud.
+  void aim_camera(const Eigen::Vector3d& centre, const Eigen::Vector3d& view_dir,
+                  const Eigen::Vector3d& up, bool orthographic);
+};
+
+// Mean seconds per frame: the camera orbiting (light static), the first light turning about
+// the view's z axis (steps 1-2 every frame), and plain VTK points of the same cloud (vertex
+// cells, point size 2, the same camera and window).
+double time_light_static(TranslucentScene& scene, int frames);
+double time_light_moving(TranslucentScene& scene, int frames);
+double time_plain_points(TranslucentScene& scene, int frames);
+
+}  // namespace sss::cli
