@@ -56,6 +56,10 @@ options (default in brackets)
   --scale-mesh FILE    mesh the scale sweep samples [the shared dragon]
   --scale-points LIST  point counts of the scale sweep [100000,300000,1000000,2000000,5000000]
   --scale-strategies L strategies the scale sweep times [paper,grid,surfel]
+  --settings LIST      measure these settings instead of the sweep: comma-separated
+                       strategy[:map[:level[:angle[:groups]]]] (strategy paper, grid,
+                       grid-near or surfel; max map side; grid level, 0 automatic; opening
+                       angle; largest group in diffusion lengths), e.g. surfel:1024:0:0.8:4
   --frames N           frames per timing (a light-moving timing with bakes over 2 s uses 1)
                        [8]
   --size N             window N x N pixels [512]
@@ -75,6 +79,7 @@ struct Options {
   std::string scale_mesh;
   std::vector<std::size_t> scale_points{100000, 300000, 1000000, 2000000, 5000000};
   std::vector<std::string> scale_strategies{"paper", "grid", "surfel"};
+  std::vector<std::string> settings;  // replaces the sweep when given
   int frames = 8;
   int size = 512;
   double max_bake_s = 300.0;
@@ -96,6 +101,33 @@ double number(const std::string& flag, const std::string& text) {
   if (end == text.c_str() || *end != '\0' || !std::isfinite(v))
     throw std::invalid_argument(flag + ": \"" + text + "\" is not a number");
   return v;
+}
+
+// A setting of the pass; level and map 0 mean the pass's own choice.
+struct Setting {
+  std::string strategy;
+  int grid_level = 0;
+  int max_map = 4096;
+  bool is_paper = false, is_default = false;
+  double opening_angle = 0.5, group_lengths = 2.0;  // the pass's defaults
+};
+
+// "strategy[:map[:level[:angle[:groups]]]]", e.g. "surfel:1024:0:0.8:4".
+Setting setting_of(const std::string& text) {
+  std::vector<std::string> f;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, ':');) f.push_back(part);
+  Setting s;
+  s.strategy = f.at(0);
+  sss::cli::strategy_of(s.strategy);
+  if (f.size() > 1) s.max_map = static_cast<int>(number("--settings", f[1]));
+  if (f.size() > 2) s.grid_level = static_cast<int>(number("--settings", f[2]));
+  if (f.size() > 3) s.opening_angle = number("--settings", f[3]);
+  if (f.size() > 4) s.group_lengths = number("--settings", f[4]);
+  s.is_paper = s.strategy == "paper";
+  s.is_default = s.strategy == "surfel" && s.max_map == 4096 && s.grid_level == 0 &&
+                 s.opening_angle == 0.5 && s.group_lengths == 2.0;
+  return s;
 }
 
 Options parse(int argc, char** argv) {
@@ -125,6 +157,9 @@ Options parse(int argc, char** argv) {
         o.scale_points.push_back(static_cast<std::size_t>(number(flag, n)));
     } else if (flag == "--scale-strategies") {
       o.scale_strategies = split(value());
+    } else if (flag == "--settings") {
+      o.settings = split(value());
+      for (const std::string& text : o.settings) setting_of(text);
     } else if (flag == "--frames") {
       o.frames = static_cast<int>(number(flag, value()));
     } else if (flag == "--size") {
@@ -186,14 +221,6 @@ void write_row(std::ostream& out, const Row& r) {
   out.flush();
 }
 
-// A setting of the pass; level and map 0 mean the pass's own choice.
-struct Setting {
-  std::string strategy;
-  int grid_level = 0;
-  int max_map = 4096;
-  bool is_paper = false, is_default = false;
-};
-
 std::vector<Setting> sweep(bool quick) {
   if (quick)
     return {{"paper", 0, 512, true, false}, {"grid", 4, 1024}, {"surfel", 0, 1024},
@@ -248,6 +275,8 @@ void measure(TranslucentScene& scene, const Setting& s, int frames, Row& row) {
   pass->SetKernelStrategy(sss::cli::strategy_of(s.strategy));
   pass->SetGridLevel(s.grid_level);
   pass->SetMaxMapSize(s.max_map);
+  pass->SetOpeningAngle(s.opening_angle);
+  pass->SetMaxGroupDiffusionLengths(s.group_lengths);
   scene.window->Render();
   row.strategy = s.strategy;
   row.is_paper = s.is_paper;
@@ -266,9 +295,9 @@ void measure(TranslucentScene& scene, const Setting& s, int frames, Row& row) {
 
 void print_row(const Row& r) {
   std::fprintf(stderr,
-               "  %-9s level %d map %4d: bake %8.3f s, static %.4f s (%.2fx), moving %8.3f s "
+               "  %-9s level %d map %4d angle %.2g groups %g: bake %8.3f s, static %.4f s (%.2fx), moving %8.3f s "
                "(%.1fx), error mean %.3f %% p99 %.2f %% max %.1f %%\n",
-               r.strategy.c_str(), r.grid_level, r.map_size, r.bake_s, r.frame_static_s,
+               r.strategy.c_str(), r.grid_level, r.map_size, r.opening_angle, r.group_lengths, r.bake_s, r.frame_static_s,
                r.frame_static_s / r.plain_points_s, r.frame_moving_s,
                r.frame_moving_s / r.plain_points_s, 100 * r.err_mean, 100 * r.err_p99,
                100 * r.err_max);
@@ -297,7 +326,12 @@ void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
                  status.hit ? "from the cache" : "computed", status.file.string().c_str());
     if (!status.message.empty()) std::fprintf(stderr, "  %s\n", status.message.c_str());
     std::string over_budget;  // a strategy whose bake went over --max-bake-s
-    for (const Setting& s : sweep(o.quick)) {
+    std::vector<Setting> rows = sweep(o.quick);
+    if (!o.settings.empty()) {
+      rows.clear();
+      for (const std::string& text : o.settings) rows.push_back(setting_of(text));
+    }
+    for (const Setting& s : rows) {
       Row row;
       row.cloud = cloud.name;
       row.points = cloud.surfels.size();
@@ -417,6 +451,7 @@ int run(Options o) {
     o.scale_strategies = {"paper", "surfel"};
     o.size = std::min(o.size, 256);
   }
+  if (!o.settings.empty()) o.scale_points.clear();  // a custom sweep measures only itself
   fs::create_directories(o.out);
   const fs::path csv_path = o.out / "bench.csv";
   std::ofstream csv(csv_path);
