@@ -71,7 +71,8 @@ vtkSmartPointer<vtkPolyData> sphere() {
   return source->GetOutput();
 }
 
-// The file's points with point normals, computed from its faces when it has none.
+// The file's points with point normals, computed from its faces when it has none. VTK 9.1's
+// reader crashes on some truncated binary files; render_ply.py shows a way to check first.
 vtkSmartPointer<vtkPolyData> read_ply(const std::string& path) {
   if (!vtkPLYReader::CanReadFile(path.c_str()))
     throw std::runtime_error(path + ": missing, unreadable or not a PLY file");

@@ -10,6 +10,8 @@ without normals, from vtkPolyDataNormals. The project's Python package must be i
 """
 import argparse
 import os
+import re
+import subprocess
 import sys
 
 import numpy
@@ -22,8 +24,12 @@ from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkRenderer,
                                          vtkWindowToImageFilter)
 
-from sss import (vtkEGLSurfacelessRenderWindow, vtkSubsurfacePass, vtkSurfelMapper,
-                 vtkTranslucentMaterial)
+try:
+    from sss import (vtkEGLSurfacelessRenderWindow, vtkSubsurfacePass, vtkSurfelMapper,
+                     vtkTranslucentMaterial)
+except ImportError as error:
+    sys.exit(f"render_ply.py: {error}: put the build's or the install's "
+             "lib/python3/dist-packages on PYTHONPATH (see the README)")
 
 
 class RenderError(Exception):
@@ -70,6 +76,19 @@ def parse_arguments():
     return args
 
 
+def check_ply_reads_cleanly(path):
+    """Reads the file once in a child process: VTK 9.1's vtkPLYReader crashes on some truncated
+    binary files and only prints a message for truncated ASCII ones."""
+    read = ("import sys\nfrom vtkmodules.vtkIOPLY import vtkPLYReader\n"
+            "reader = vtkPLYReader()\nreader.SetFileName(sys.argv[1])\nreader.Update()")
+    child = subprocess.run([sys.executable, "-c", read, path], capture_output=True, text=True)
+    said = re.sub(r"\x1b\[[0-9;]*m", "", child.stderr).strip().splitlines()
+    if child.returncode != 0:
+        raise RenderError(f"{path}: truncated or malformed (VTK's PLY reader crashed on it)")
+    if said:
+        raise RenderError(f"{path}: truncated or malformed (VTK's PLY reader: {said[-1]})")
+
+
 def read_surfels(path):
     """The PLY's points with point normals, computed from its faces when it has none."""
     if not os.path.isfile(path):
@@ -79,6 +98,7 @@ def read_surfels(path):
     reader = vtkPLYReader()
     if not reader.CanReadFile(path):
         raise RenderError(f"{path}: not a PLY file")
+    check_ply_reads_cleanly(path)
     reader.SetFileName(path)
     reader.Update()
     cloud = reader.GetOutput()

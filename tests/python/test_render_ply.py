@@ -51,6 +51,19 @@ def sphere_samples(count, radius):
     return radius * normals, normals
 
 
+def write_sphere_mesh_ply(path):
+    """A vtkSphereSource mesh (binary PLY; vtkPLYWriter writes no normals)."""
+    sphere = vtkSphereSource()
+    sphere.SetRadius(0.5)
+    sphere.SetThetaResolution(64)
+    sphere.SetPhiResolution(64)
+    writer = vtkPLYWriter()
+    writer.SetInputConnection(sphere.GetOutputPort())
+    writer.SetFileName(path)
+    if writer.Write() != 1:
+        raise OSError(f"{path}: could not be written")
+
+
 def run_example(*arguments):
     return subprocess.run([sys.executable, EXAMPLE, *arguments], capture_output=True,
                           text=True, timeout=300)
@@ -87,15 +100,8 @@ class RenderPly(unittest.TestCase):
         self.assert_lit_png(result, png, 160, 120)
 
     def test_mesh_without_normals_gets_them_from_its_faces(self):
-        sphere = vtkSphereSource()
-        sphere.SetRadius(0.5)
-        sphere.SetThetaResolution(64)
-        sphere.SetPhiResolution(64)
         ply = path_in_output("sphere_mesh.ply")
-        writer = vtkPLYWriter()
-        writer.SetInputConnection(sphere.GetOutputPort())
-        writer.SetFileName(ply)
-        self.assertEqual(writer.Write(), 1)
+        write_sphere_mesh_ply(ply)
         png = path_in_output("sphere_mesh.png")
         result = run_example(ply, "--material", "skimmilk", "--mm-per-unit", "30",
                              "--output", png, "--size", "128")
@@ -107,6 +113,16 @@ class RenderPly(unittest.TestCase):
         result = run_example(os.path.join(OUTPUT_DIR, "no_such_cloud.ply"), "--output", png)
         self.assertNotEqual(result.returncode, 0)
         self.assertIn("no_such_cloud.ply: no such file", result.stderr)
+        self.assertFalse(os.path.exists(png))
+
+    def test_truncated_file_fails_clearly(self):
+        ply = path_in_output("truncated.ply")
+        write_sphere_mesh_ply(ply)
+        os.truncate(ply, os.path.getsize(ply) * 3 // 5)
+        png = path_in_output("truncated.png")
+        result = run_example(ply, "--output", png)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("truncated.ply: truncated or malformed", result.stderr)
         self.assertFalse(os.path.exists(png))
 
     def test_points_without_normals_or_faces_fail_clearly(self):
