@@ -187,10 +187,8 @@ std::string vtkOSMesaRenderWindow::FindShimLibrary()
   {
     candidates.emplace_back(env);
   }
-#ifdef SSS_OSMESA_SHIM_PATH
-  candidates.emplace_back(SSS_OSMESA_SHIM_PATH);
-#endif
-  // next to the binary that contains this class (installed layout)
+  // Next to the library that contains this class: build/lib in the build tree, the
+  // install prefix's library folder once installed.
   std::string self =
     LibraryOf(reinterpret_cast<const void*>(&vtkOSMesaRenderWindow::FindShimLibrary));
   const std::size_t slash = self.rfind('/');
@@ -198,6 +196,9 @@ std::string vtkOSMesaRenderWindow::FindShimLibrary()
   {
     candidates.push_back(self.substr(0, slash + 1) + ShimFileName);
   }
+#ifdef SSS_OSMESA_SHIM_PATH
+  candidates.emplace_back(SSS_OSMESA_SHIM_PATH);
+#endif
   for (const std::string& c : candidates)
   {
     if (!c.empty() && access(c.c_str(), R_OK) == 0)

@@ -63,6 +63,8 @@ public:
    * creating threads or doing work that must not be repeated.
    *
    * GetPreloadValue() gives the LD_PRELOAD value to launch a program by hand.
+   * FindShimLibrary() takes $SSS_OSMESA_SHIM, else libsss_osmesa_shim.so next
+   * to this library (build or install tree), else the build tree's copy.
    */
   static bool IsProcessOSMesaReady(std::string* why = nullptr);
   static bool EnsureProcessIsOSMesaReady(int argc, char** argv, std::string& why);

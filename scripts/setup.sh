@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libflann-dev liblz4-dev zlib1g-dev libgtest-dev
-  libvtk9-dev python3-vtk9 libpcl-dev
+  libvtk9-dev python3-vtk9 python3-numpy libpcl-dev
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth libglx-mesa0
   python3-matplotlib

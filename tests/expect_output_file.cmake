@@ -1,0 +1,15 @@
+# cmake -DPROGRAM=... -DOUTPUT=... -P expect_output_file.cmake
+# Runs PROGRAM --output OUTPUT and fails unless it exits 0 and OUTPUT is a non-empty file.
+file(REMOVE "${OUTPUT}")
+execute_process(COMMAND "${PROGRAM}" --output "${OUTPUT}" RESULT_VARIABLE exit_code)
+if(NOT exit_code EQUAL 0)
+  message(FATAL_ERROR "${PROGRAM} exited with ${exit_code}")
+endif()
+if(NOT EXISTS "${OUTPUT}")
+  message(FATAL_ERROR "${PROGRAM} did not write ${OUTPUT}")
+endif()
+file(SIZE "${OUTPUT}" bytes)
+if(bytes EQUAL 0)
+  message(FATAL_ERROR "${PROGRAM} wrote an empty ${OUTPUT}")
+endif()
+message(STATUS "${OUTPUT}: ${bytes} bytes")

@@ -1,0 +1,40 @@
+"""The wrapped classes work with vtkmodules objects in both directions (run by CTest with the
+build tree's `sss` on PYTHONPATH and no LD_LIBRARY_PATH)."""
+import unittest
+
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderPass, vtkRenderWindow
+
+import sss
+
+
+class Wrapping(unittest.TestCase):
+    def test_vtkmodules_objects_pass_in_and_come_back_unchanged(self):
+        actor = vtkActor()
+        mapper = sss.vtkSurfelMapper()
+        mapper.SetInputData(vtkPolyData())
+        actor.SetMapper(mapper)
+        self.assertIs(actor.GetMapper(), mapper)
+
+        material = sss.vtkTranslucentMaterial()
+        self.assertTrue(material.SetPreset("ketchup"))
+        material.ApplyTo(actor)
+        self.assertIs(sss.vtkTranslucentMaterial.GetFrom(actor), material)
+
+        subsurface = sss.vtkSubsurfacePass()
+        self.assertIsInstance(subsurface, vtkRenderPass)
+        renderer = vtkRenderer()
+        renderer.SetPass(subsurface)
+        self.assertIs(renderer.GetPass(), subsurface)
+
+        window = sss.vtkEGLSurfacelessRenderWindow()
+        self.assertIsInstance(window, vtkRenderWindow)
+        window.AddRenderer(renderer)
+        self.assertIs(window.GetRenderers().GetFirstRenderer(), renderer)
+
+    def test_classes_live_in_sss_sssTranslucency(self):
+        self.assertEqual(sss.vtkSurfelMapper.__module__, "sss.sssTranslucency")
+
+
+if __name__ == "__main__":
+    unittest.main()
