@@ -28,6 +28,8 @@ run("configuring the consumer" "${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE}" -B "${
   "-DCMAKE_PREFIX_PATH=${prefix}")
 expect("SSS_DIR: ${prefix}/" "the package is not the installed one")
 run("building the consumer" "${CMAKE_COMMAND}" --build "${WORK_DIR}/build")
+run("the consumer of SSS::PCL" "${WORK_DIR}/build/sss_consumer_pcl")
+message(STATUS "${output}")
 run("the consumer" "${WORK_DIR}/build/sss_consumer")
 message(STATUS "${output}")
 get_filename_component(real_prefix "${prefix}" REALPATH)
