@@ -7,9 +7,7 @@
 #include <vtkCamera.h>
 #include <vtkEGLSurfacelessRenderWindow.h>
 #include <vtkFloatArray.h>
-#include <vtkIdList.h>
 #include <vtkLight.h>
-#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPLYReader.h>
 #include <vtkPNGWriter.h>
@@ -18,7 +16,6 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
-#include <vtkStaticPointLocator.h>
 #include <vtkSubsurfacePass.h>
 #include <vtkSurfelMapper.h>
 #include <vtkTranslucentMaterial.h>
@@ -92,45 +89,6 @@ vtkSmartPointer<vtkPolyData> read_ply(const std::string& path) {
   return normals->GetOutput();
 }
 
-// Mean distance from a point to its nearest distinct neighbour.
-double mean_spacing(vtkPolyData* cloud) {
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
-  vtkNew<vtkIdList> nearest;
-  double sum = 0.0;
-  vtkIdType counted = 0;
-  for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i) {
-    double p[3], q[3];
-    cloud->GetPoint(i, p);
-    locator->FindClosestNPoints(8, p, nearest);  // several, so duplicates do not hide it
-    for (vtkIdType k = 0; k < nearest->GetNumberOfIds(); ++k) {
-      cloud->GetPoint(nearest->GetId(k), q);
-      const double d = std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
-      if (d > 0.0) {
-        sum += d;
-        ++counted;
-        break;
-      }
-    }
-  }
-  return counted ? sum / counted : 0.0;
-}
-
-// Maps the 99.5th percentile of the last frame's visible radiance to white.
-double automatic_exposure(vtkSubsurfacePass* pass) {
-  vtkFloatArray* linear = pass->GetLinearImage();
-  std::vector<float> visible;
-  for (vtkIdType p = 0; p < linear->GetNumberOfTuples(); ++p) {
-    const float m = std::max({linear->GetValue(3 * p), linear->GetValue(3 * p + 1),
-                              linear->GetValue(3 * p + 2)});
-    if (m > 0.0f) visible.push_back(m);
-  }
-  if (visible.empty()) return 1.0;
-  auto at = visible.begin() + static_cast<std::ptrdiff_t>(0.995 * (visible.size() - 1));
-  std::nth_element(visible.begin(), at, visible.end());
-  return 1.0 / *at;
-}
 
 void write_png(vtkRenderWindow* window, const std::string& path) {
   vtkNew<vtkWindowToImageFilter> grab;
@@ -150,12 +108,9 @@ void write_png(vtkRenderWindow* window, const std::string& path) {
 
 void render(const Options& o) {
   vtkSmartPointer<vtkPolyData> surfels = o.input.empty() ? sphere() : read_ply(o.input);
-  const double spacing = mean_spacing(surfels);
-  if (!(spacing > 0.0)) throw std::runtime_error("all points coincide: nothing to render");
-
   vtkNew<vtkSurfelMapper> mapper;
   mapper->SetInputData(surfels);
-  mapper->SetRadius(1.5 * spacing);  // at the spacing itself grazing discs leave gaps
+  mapper->SetRadiusScale(1.5);  // the default: 1.5 x the mean spacing closes grazing gaps
   mapper->ScalarVisibilityOff();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
@@ -186,7 +141,8 @@ void render(const Options& o) {
   window->Render();
   if (pass->GetLastTranslucentActors() != 1)
     throw std::runtime_error("nothing was drawn translucent: " + mapper->GetInputProblem());
-  pass->SetExposure(automatic_exposure(pass));
+  const double white = pass->GetLinearImageQuantile(0.995);  // visible radiance shown white
+  pass->SetExposure(white > 0.0 ? 1.0 / white : 1.0);
   renderer->GetActiveCamera()->Modified();  // a camera-only change: the view step alone
   window->Render();
   write_png(window, o.output);

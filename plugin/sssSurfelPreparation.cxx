@@ -12,7 +12,8 @@
 namespace sss
 {
 
-PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, vtkUnsignedCharArray* colours,
+PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, double spacing_scale,
+  vtkUnsignedCharArray* colours,
   const std::array<std::uint8_t, 4>& fallback)
 {
   PreparedSurfels prepared;
@@ -56,7 +57,7 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, vtkUnsignedCh
     const double spacing = cloud.mean_spacing();
     const Bounds b = cloud.bounds();
     const double extent = b.extent().norm();
-    cloud.radius = spacing > 0.0 ? spacing : (extent > 0.0 ? 0.01 * extent : 1.0);
+    cloud.radius = spacing > 0.0 ? spacing_scale * spacing : (extent > 0.0 ? 0.01 * extent : 1.0);
   }
   const Bounds b = cloud.bounds();
   const Eigen::Vector3d c = b.center();

@@ -27,7 +27,8 @@ struct PreparedSurfels
 
 // radius <= 0 picks the mean nearest-neighbour spacing. colours (RGBA per input point) may be
 // null: then every point gets `fallback`.
-PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, vtkUnsignedCharArray* colours,
+PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, double spacing_scale,
+  vtkUnsignedCharArray* colours,
   const std::array<std::uint8_t, 4>& fallback);
 
 }

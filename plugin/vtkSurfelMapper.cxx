@@ -117,7 +117,7 @@ const sss::PreparedSurfels& vtkSurfelMapper::UpdateSurfels(vtkActor* act)
   }
   vtkUnsignedCharArray* colours =
     input && this->ScalarVisibility ? this->MapScalars(input, 1.0) : nullptr;
-  this->Impl->Prepared = sss::prepare_surfels(input, this->Radius, colours, fallback);
+  this->Impl->Prepared = sss::prepare_surfels(input, this->Radius, this->RadiusScale, colours, fallback);
   this->Impl->PreparedTime.Modified();
   const sss::PreparedSurfels& p = this->Impl->Prepared;
   if (!p.error.empty())
@@ -281,6 +281,7 @@ void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkSurfelMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Radius: " << this->Radius << " (0: mean nearest-neighbour spacing)\n";
+  os << indent << "Radius: " << this->Radius << " (0: RadiusScale x mean nearest-neighbour spacing)\n";
+  os << indent << "RadiusScale: " << this->RadiusScale << "\n";
   os << indent << "Surfels: " << this->Impl->Prepared.cloud.size() << "\n";
 }

@@ -39,11 +39,21 @@ public:
 
   ///@{
   /**
-   * Disc radius in scene units. 0 (the default) uses the mean distance from a point to its
-   * nearest neighbour, which closes the holes of a uniformly sampled surface.
+   * Disc radius in scene units. 0 (the default) uses RadiusScale times the mean distance from
+   * a point to its nearest neighbour.
    */
   vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * The automatic radius over the mean point spacing (default 1.5). At 1 the discs of a
+   * uniformly sampled surface touch, but seen from the light at grazing angles they leave
+   * gaps through which the far side is lit, which is wrong and slows the pass down.
+   */
+  vtkSetClampMacro(RadiusScale, double, 0.01, 100.0);
+  vtkGetMacro(RadiusScale, double);
   ///@}
 
   /** The radius in use (scene units) after the last update; 0 before the first. */
@@ -73,6 +83,7 @@ protected:
   ~vtkSurfelMapper() override;
 
   double Radius = 0.0;
+  double RadiusScale = 1.5;
 
 private:
   vtkSurfelMapper(const vtkSurfelMapper&) = delete;

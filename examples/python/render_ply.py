@@ -15,9 +15,6 @@ import subprocess
 import sys
 
 import numpy
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkIdList
-from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOPLY import vtkPLYReader
@@ -121,25 +118,6 @@ def read_surfels(path):
     return normals.GetOutput()
 
 
-def mean_spacing(surfels):
-    """Mean distance from a point to its nearest distinct neighbour (0 if there is none)."""
-    points = vtk_to_numpy(surfels.GetPoints().GetData()).astype(float)
-    neighbours = min(8, len(points))  # several, so that duplicate points do not hide it
-    locator = vtkStaticPointLocator()
-    locator.SetDataSet(surfels)
-    locator.BuildLocator()
-    found = vtkIdList()
-    nearest = numpy.empty((len(points), neighbours), dtype=numpy.int64)
-    for i, point in enumerate(points):
-        locator.FindClosestNPoints(neighbours, point, found)
-        nearest[i] = [found.GetId(j) for j in range(neighbours)]
-    distances = numpy.linalg.norm(points[nearest] - points[:, None, :], axis=2)
-    distances[distances == 0] = numpy.inf
-    closest = distances.min(axis=1)
-    closest = closest[numpy.isfinite(closest)]
-    return closest.mean() if closest.size else 0.0
-
-
 def light_from_above(renderer):
     """A directional light from above and slightly behind the object, as the camera sees it."""
     camera = renderer.GetActiveCamera()
@@ -155,26 +133,15 @@ def light_from_above(renderer):
     return light
 
 
-def automatic_exposure(subsurface):
-    """1 / the 99.5th percentile of the visible radiance of the last frame (white there)."""
-    linear = vtk_to_numpy(subsurface.GetLinearImage()).reshape(-1, 3).max(axis=1)
-    visible = linear[linear > 0]
-    white = numpy.percentile(visible, 99.5) if visible.size else 0.0
-    return 1.0 / white if white > 0 else 1.0
-
-
 def render(surfels, args):
     """The image (vtkImageData, RGB) of the surfels, translucent, lit from above."""
     material = vtkTranslucentMaterial()
     if not material.SetPreset(args.material):
         raise RenderError(f"unknown material '{args.material}'")
     material.SetMillimetresPerUnit(args.mm_per_unit)
-    spacing = mean_spacing(surfels)
-    if spacing == 0:
-        raise RenderError(f"{args.ply}: all points coincide; there is no surface to render")
     mapper = vtkSurfelMapper()
     mapper.SetInputData(surfels)
-    mapper.SetRadius(args.radius_scale * spacing)
+    mapper.SetRadiusScale(args.radius_scale)
     mapper.ScalarVisibilityOff()
     actor = vtkActor()
     actor.SetMapper(mapper)
@@ -199,7 +166,8 @@ def render(surfels, args):
     if subsurface.GetLastTranslucentActors() != 1:
         problem = mapper.GetInputProblem() or "see the errors above"
         raise RenderError(f"{args.ply}: could not be rendered translucent ({problem})")
-    subsurface.SetExposure(automatic_exposure(subsurface))
+    white = subsurface.GetLinearImageQuantile(0.995)  # visible radiance shown white
+    subsurface.SetExposure(1.0 / white if white > 0 else 1.0)
     renderer.GetActiveCamera().Modified()  # a camera-only change: the view step alone
     window.Render()
 
