@@ -5,8 +5,6 @@
 #include <stdexcept>
 
 namespace sss::cli {
-namespace {
-
 double number(const std::string& flag, const std::string& text) {
   std::size_t used = 0;
   double v = 0;
@@ -19,6 +17,8 @@ double number(const std::string& flag, const std::string& text) {
     throw std::invalid_argument(flag + ": '" + text + "' is not a finite number");
   return v;
 }
+
+namespace {
 
 std::vector<double> numbers(const std::string& flag, const std::string& text, std::size_t count) {
   std::vector<double> values;

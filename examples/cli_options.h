@@ -43,6 +43,9 @@ struct Options {
 
 // Throws std::invalid_argument with a message naming the flag and what is wrong.
 Options parse(int argc, char** argv);
+
+// The value of a numeric flag; throws std::invalid_argument naming the flag otherwise.
+double number(const std::string& flag, const std::string& text);
 std::string usage();
 
 }  // namespace sss::cli

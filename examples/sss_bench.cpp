@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_options.h"
 #include "cloud_input.h"
 #include "error_metric.h"
 #include "procedural_shapes.h"
@@ -34,6 +35,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using sss::cli::number;
 using sss::cli::TranslucentScene;
 
 const char* kUsage = R"(usage: sss_bench [CLOUD.pcd|.ply|.ply.gz ...] [options]
@@ -95,13 +97,6 @@ std::vector<std::string> split(const std::string& text) {
   return parts;
 }
 
-double number(const std::string& flag, const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || !std::isfinite(v))
-    throw std::invalid_argument(flag + ": \"" + text + "\" is not a number");
-  return v;
-}
 
 // A setting of the pass; level and map 0 mean the pass's own choice.
 struct Setting {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_options.h"
 #include "material.h"
 #include "procedural_shapes.h"
 #include "sssPclTranslucentCloud.h"
@@ -73,20 +74,13 @@ Options parse(int argc, char** argv) {
       if (i + 1 >= argc) throw std::invalid_argument(flag + ": needs a value");
       return argv[++i];
     };
-    const auto number = [&](const std::string& text) {
-      char* end = nullptr;
-      const double v = std::strtod(text.c_str(), &end);
-      if (end == text.c_str() || *end != '\0' || !std::isfinite(v))
-        throw std::invalid_argument(flag + ": \"" + text + "\" is not a number");
-      return v;
-    };
     if (flag == "--help" || flag == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);
     } else if (flag == "--material") {
       o.material = value();
     } else if (flag == "--mm-per-unit") {
-      o.mm_per_unit = number(value());
+      o.mm_per_unit = sss::cli::number(flag, value());
       if (!(o.mm_per_unit > 0)) throw std::invalid_argument("--mm-per-unit: needs a positive value");
     } else if (flag == "--quality") {
       const std::string q = value();
@@ -95,7 +89,7 @@ Options parse(int argc, char** argv) {
       else if (q == "accurate") o.quality = sss::Quality::Accurate;
       else throw std::invalid_argument("--quality: use interactive, balanced or accurate");
     } else if (flag == "--samples") {
-      const double n = number(value());
+      const double n = sss::cli::number(flag, value());
       if (n < 0 || n != std::floor(n)) throw std::invalid_argument("--samples: needs a count");
       o.samples = static_cast<std::size_t>(n);
     } else if (flag == "--size") {
@@ -106,7 +100,7 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--keys") {
       o.keys = value();
     } else if (flag == "--frames") {
-      o.frames = static_cast<int>(number(value()));
+      o.frames = static_cast<int>(sss::cli::number(flag, value()));
     } else if (flag == "--screenshot") {
       o.screenshot = value();
     } else if (!flag.empty() && flag[0] == '-') {
