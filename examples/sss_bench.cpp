@@ -68,7 +68,7 @@ options (default in brackets)
   --max-bake-s S       once a setting's bake exceeds S seconds, the costlier settings of
                        that strategy (finer grid, larger map, more points) are skipped [300]
   --out DIR            output folder [bench]
-  --cache DIR          reference cache folder [OUT/reference-cache]
+  --cache DIR          reference cache folder [$XDG_CACHE_HOME/sss, else ~/.cache/sss]
   --help               this text
 )";
 
@@ -175,7 +175,13 @@ Options parse(int argc, char** argv) {
     throw std::invalid_argument("--frames, --size, --mm-per-unit need positive values and "
                                 "--materials at least one name");
   for (const std::string& s : o.scale_strategies) sss::cli::strategy_of(s);
-  if (o.cache.empty()) o.cache = o.out / "reference-cache";
+  if (o.cache.empty()) {
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    o.cache = xdg && *xdg ? fs::path(xdg) / "sss"
+              : home && *home ? fs::path(home) / ".cache" / "sss"
+                              : o.out / "reference-cache";
+  }
   return o;
 }
 
