@@ -18,82 +18,63 @@ uniform float openingAngle;
 uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral
 
-// The walk visits the implicit quadtree over each pyramid depth first without a stack: a
-// node is its level and its Morton index m among the nodes of that level (x in the even bits,
-// y in the odd ones), so opening a node is m -> 4 m one level down and moving on past it is
-// m + 1 followed by one level up for every pair of trailing zero bits (a finished parent).
-ivec2 mortonToTexel(int m)
-{
-  ivec2 t = ivec2(m, m >> 1) & 0x55555555;
-  t = (t | (t >> 1)) & 0x33333333;
-  t = (t | (t >> 2)) & 0x0f0f0f0f;
-  t = (t | (t >> 4)) & 0x00ff00ff;
-  return (t | (t >> 8)) & 0x0000ffff;
-}
-
 vec3 gatherB(vec3 x)
 {
   float reach = windowPart == 1 ? min(windowR1, supportRadius) : supportRadius;
   vec3 sum = vec3(0.0);
+  ivec3 stack[64];
   for (int light = 0; light < lightCount; ++light)
   {
     int top = levelCount[light] - 1;
     int base = light * SSS_MAX_LEVELS;
-    int level = top;
-    int m = 0;
-    while (level < top || m == 0)  // back at the top past its one node: done
+    int depth = 0;
+    stack[depth++] = ivec3(0, 0, top);
+    while (depth > 0)
     {
-      ivec2 node = mortonToTexel(m);
-      vec4 rect = levelRect[base + level];
-      bool open = false;
-      if (node.x < int(rect.z) && node.y < int(rect.w))
+      ivec3 node = stack[--depth];
+      int level = node.z;
+      ivec2 texel = ivec2(levelRect[base + level].xy) + node.xy;
+      vec4 point = texelFetch(mapPoint, texel, 0);
+      if (point.w <= 0.0)
       {
-        ivec2 texel = ivec2(rect.xy) + node;
-        vec4 point = texelFetch(mapPoint, texel, 0);
-        if (point.w > 0.0)
+        continue;
+      }
+      vec4 normal = texelFetch(mapNormal, texel, 0);
+      float lateral = texelSize[light] * float(1 << level) * 1.41421356;
+      float size = length(vec2(lateral, normal.w));
+      float d = distance(x, point.xyz);
+      if (d - size > reach || (windowPart == 2 && d + size < windowR0))
+      {
+        continue;
+      }
+      bool straddlesWindow = windowPart != 0 && d + size > windowR0 && d - size < windowR1 &&
+        size > 0.25 * (windowR1 - windowR0);
+      float sTrSignificant = 0.0;  // fastest decay among channels not yet below e^-16
+      for (int c = 0; c < 3; ++c)
+      {
+        if (sTr[c] * (d - size) < 16.0)
         {
-          vec4 normal = texelFetch(mapNormal, texel, 0);
-          float lateral = texelSize[light] * float(1 << level) * 1.41421356;
-          float size = length(vec2(lateral, normal.w));
-          float d = distance(x, point.xyz);
-          if (!(d - size > reach || (windowPart == 2 && d + size < windowR0)))
-          {
-            bool straddlesWindow = windowPart != 0 && d + size > windowR0 &&
-              d - size < windowR1 && size > 0.25 * (windowR1 - windowR0);
-            float sTrSignificant = 0.0;  // fastest decay among channels not yet below e^-16
-            for (int c = 0; c < 3; ++c)
-            {
-              if (sTr[c] * (d - size) < 16.0)
-              {
-                sTrSignificant = max(sTrSignificant, sTr[c]);
-              }
-            }
-            bool smallEnough =
-              size < openingAngle * d && size * sTrSignificant < maxGroupDiffusionLengths;
-            open = level > 0 && !(smallEnough && !straddlesWindow);
-            if (!open)
-            {
-              vec3 power = texelFetch(mapPower, texel, 0).rgb;
-              vec4 c0 = texelFetch(mapCovariance0, texel, 0);
-              vec4 c1 = texelFetch(mapCovariance1, texel, 0);
-              mat3 cov = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
-              sum += power * dipoleRdSecondOrder(point.xyz, normal.xyz, cov, x) * kernelWindow(d);
-            }
-          }
+          sTrSignificant = max(sTrSignificant, sTr[c]);
         }
       }
-      if (open)
+      bool smallEnough =
+        size < openingAngle * d && size * sTrSignificant < maxGroupDiffusionLengths;
+      if (level == 0 || (smallEnough && !straddlesWindow) || depth > 60)
       {
-        m <<= 2;
-        --level;
+        vec3 power = texelFetch(mapPower, texel, 0).rgb;
+        vec4 c0 = texelFetch(mapCovariance0, texel, 0);
+        vec4 c1 = texelFetch(mapCovariance1, texel, 0);
+        mat3 cov = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
+        sum += power * dipoleRdSecondOrder(point.xyz, normal.xyz, cov, x) * kernelWindow(d);
+        continue;
       }
-      else
+      ivec2 childSize = ivec2(levelRect[base + level - 1].zw);
+      for (int k = 3; k >= 0; --k)
       {
-        ++m;
-        while ((m & 3) == 0 && level < top)  // a parent finished with its last child
+        ivec2 child = 2 * node.xy + ivec2(k & 1, k >> 1);
+        if (child.x < childSize.x && child.y < childSize.y)
         {
-          m >>= 2;
-          ++level;
+          stack[depth++] = ivec3(child, level - 1);
         }
       }
     }
