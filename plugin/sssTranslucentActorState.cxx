@@ -4,6 +4,7 @@
 #include "sssPaperTaps.h"
 #include "sss_dipole.h"
 #include "sss_gather_paper.h"
+#include "sss_gather_receivers_fs.h"
 #include "sss_gather_tree.h"
 #include "sss_illumination_fs.h"
 #include "sss_kernel_window.h"
@@ -35,6 +36,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <numeric>
 #include <sstream>
@@ -95,8 +97,10 @@ struct ProgramVAO
   vtkNew<vtkOpenGLVertexArrayObject> vao;
   vtkShaderProgram* program = nullptr;
   bool needs(vtkShaderProgram* p) const { return p != program; }
-  // Binds the VAO with one vec3 attribute, re-linked when the program changed.
-  void bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name)
+  // Binds the VAO with one vec3 attribute and, if given, one vec2 attribute, re-linked when
+  // the program changed.
+  void bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name,
+    vtkOpenGLBufferObject* buffer2 = nullptr, const char* name2 = nullptr)
   {
     vao->Bind();
     if (needs(p))
@@ -104,11 +108,107 @@ struct ProgramVAO
       vao->ReleaseGraphicsResources();
       vao->Bind();
       vao->AddAttributeArray(p, buffer, name, 0, 12, VTK_FLOAT, 3, false);
+      if (buffer2)
+      {
+        vao->AddAttributeArray(p, buffer2, name2, 0, 8, VTK_FLOAT, 2, false);
+      }
       program = p;
     }
   }
 };
+
+// 30-bit Morton code of a point quantised to 1024 cells per axis over the cube `lo`, `edge`.
+std::uint32_t MortonCode(const Eigen::Vector3d& p, const Eigen::Vector3d& lo, double edge)
+{
+  std::uint32_t code = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double t = edge > 0.0 ? (p[a] - lo[a]) / edge : 0.0;
+    const std::uint32_t q = static_cast<std::uint32_t>(std::clamp(t * 1024.0, 0.0, 1023.0));
+    for (int b = 0; b < 10; ++b)
+    {
+      code |= ((q >> b) & 1u) << (3 * b + a);
+    }
+  }
+  return code;
 }
+}
+
+// The receivers of one walk (surfels or kept virtual points) as a list texture: in Morton
+// order of position, 16 to a 4 x 4 texel block (itself in Morton order), blocks row by row.
+// llvmpipe shades a 4 x 4 block in SIMD lanes and a divergent loop costs its slowest lane,
+// so neighbouring receivers side by side walk nearly the same tree in the same time.
+struct ReceiverList
+{
+  vtkSmartPointer<vtkTextureObject> points;  // xyz: local mm, w: 1 where a receiver
+  vtkSmartPointer<vtkTextureObject> B;       // the walk's result, same layout
+  vtkNew<vtkOpenGLBufferObject> texel;       // per receiver, in input order: its texel
+  int width = 0, height = 0;
+
+  void upload(vtkOpenGLRenderWindow* window, const std::vector<Eigen::Vector3d>& positions)
+  {
+    const std::size_t n = positions.size();
+    Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();
+    if (n > 0)
+    {
+      lo = hi = positions[0];
+    }
+    for (const Eigen::Vector3d& p : positions)
+    {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    const double edge = (hi - lo).maxCoeff();
+    std::vector<std::uint32_t> code(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      code[i] = MortonCode(positions[i], lo, edge);
+    }
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(
+      order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return code[a] < code[b]; });
+    const int blocks_per_row = kListWidth / 4;
+    const std::size_t blocks = (n + 15) / 16;
+    width = kListWidth;
+    height = 4 * static_cast<int>(std::max<std::size_t>(1, (blocks + blocks_per_row - 1) / blocks_per_row));
+    std::vector<float> texels(4 * static_cast<std::size_t>(width) * height, 0.0f);
+    std::vector<float> at(2 * n);
+    for (std::size_t rank = 0; rank < n; ++rank)
+    {
+      const std::size_t block = rank / 16;
+      const int j = static_cast<int>(rank % 16);
+      const int x = static_cast<int>(block % blocks_per_row) * 4 + ((j & 1) | ((j >> 1) & 2));
+      const int y = static_cast<int>(block / blocks_per_row) * 4 + (((j >> 1) & 1) | ((j >> 2) & 2));
+      const std::size_t i = order[rank];
+      float* t = &texels[4 * (static_cast<std::size_t>(y) * width + x)];
+      for (int c = 0; c < 3; ++c)
+      {
+        t[c] = static_cast<float>(positions[i][c]);
+      }
+      t[3] = 1.0f;
+      at[2 * i] = static_cast<float>(x);
+      at[2 * i + 1] = static_cast<float>(y);
+    }
+    points = float_texture_2d(window, width, height);
+    points->Create2DFromRaw(width, height, 4, VTK_FLOAT, texels.data());
+    B = float_texture_2d(window, width, height);
+    texel->Upload(at, vtkOpenGLBufferObject::ArrayBuffer);
+  }
+
+  void release(vtkWindow* window)
+  {
+    texel->ReleaseGraphicsResources();
+    for (auto* t : { &points, &B })
+    {
+      if (*t)
+      {
+        (*t)->ReleaseGraphicsResources(window);
+        *t = nullptr;
+      }
+    }
+  }
+};
 
 struct TranslucentActorState::Gpu
 {
@@ -134,6 +234,11 @@ struct TranslucentActorState::Gpu
 
   vtkSmartPointer<vtkTextureObject> list;
   int list_height = 1;
+
+  ReceiverList surfel_receivers, grid_receivers;
+  std::unique_ptr<vtkOpenGLQuadHelper> gather_quad;
+  std::string gather_quad_source;
+  vtkNew<vtkOpenGLFramebufferObject> gather_fbo;
 
   void activate_maps()
   {
@@ -182,6 +287,14 @@ struct TranslucentActorState::Gpu
         *t = nullptr;
       }
     }
+    surfel_receivers.release(window);
+    grid_receivers.release(window);
+    if (gather_quad)
+    {
+      gather_quad->ReleaseGraphicsResources(window);
+      gather_quad.reset();
+    }
+    gather_fbo->ReleaseGraphicsResources(window);
     map_fbo->ReleaseGraphicsResources(window);
     grid_fbo->ReleaseGraphicsResources(window);
     list_fbo->ReleaseGraphicsResources(window);
@@ -310,6 +423,7 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
   list_width_ = kListWidth;
   g.list_height = static_cast<int>((n + kListWidth - 1) / kListWidth);
   g.list = float_texture_2d(window, list_width_, std::max(1, g.list_height));
+  g.surfel_receivers.upload(window, g.local.positions);
 
   g.grid.reset();
   g.grid_radiance = nullptr;
@@ -341,6 +455,8 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
       [&](std::size_t a, std::size_t b) { return ijk[a].z() < ijk[b].z(); });
     std::vector<float> indices;
     indices.reserve(3 * order.size());
+    std::vector<Eigen::Vector3d> receivers;
+    receivers.reserve(order.size());
     g.slice_range.assign(grid.dims()[2], { 0, 0 });
     for (std::size_t r = 0; r < order.size(); ++r)
     {
@@ -353,7 +469,9 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
       ++g.slice_range[k].second;
       indices.insert(indices.end(),
         { static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()) });
+      receivers.push_back(grid.origin() + grid.spacing() * c.matrix());
     }
+    g.grid_receivers.upload(window, receivers);
     g.grid_index->Upload(indices, vtkOpenGLBufferObject::ArrayBuffer);
     g.grid_vao.program = nullptr;
     auto tex = vtkSmartPointer<vtkTextureObject>::New();
@@ -674,9 +792,14 @@ bool TranslucentActorState::run_virtual_points(
 {
   Gpu& g = *gpu_;
   const VirtualGrid& grid = *g.grid;
-  const std::string fs = WithPieces(sss_virtual_points_fs, gather_source(settings));
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(sss_virtual_points_vs, fs.c_str(), "");
+  const bool split = settings.strategy == KernelStrategy::GridNear;
+  const double r0 = settings.near_field_cells * grid.spacing();
+  if (!gather_at_receivers(window, settings, g.grid_receivers, split ? 2 : 0, r0, 2.0 * r0, error))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    sss_virtual_points_vs, sss_virtual_points_fs, "");
   if (!program)
   {
     error = "the virtual-point shaders did not compile";
@@ -686,15 +809,9 @@ bool TranslucentActorState::run_virtual_points(
   PointPassState point_pass(state);
 
   ProgramVAO& pv = g.grid_vao;
-  pv.bind(program, g.grid_index, "gridIndex");
-  g.activate_maps();
-  const bool split = settings.strategy == KernelStrategy::GridNear;
-  const double r0 = settings.near_field_cells * grid.spacing();
-  set_gather_uniforms(program, settings, split ? 2 : 0, r0, 2.0 * r0);
-  const float origin[3] = { static_cast<float>(grid.origin().x()),
-    static_cast<float>(grid.origin().y()), static_cast<float>(grid.origin().z()) };
-  program->SetUniform3f("gridOrigin", origin);
-  program->SetUniformf("gridSpacing", static_cast<float>(grid.spacing()));
+  pv.bind(program, g.grid_index, "gridIndex", g.grid_receivers.texel, "gatheredTexel");
+  g.grid_receivers.B->Activate();
+  program->SetUniformi("gathered", g.grid_receivers.B->GetTextureUnit());
   const float slice[2] = { float(grid.dims()[0]), float(grid.dims()[1]) };
   program->SetUniform2f("sliceSize", slice);
 
@@ -719,7 +836,7 @@ bool TranslucentActorState::run_virtual_points(
   glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
   state->PopFramebufferBindings();
   pv.vao->Release();
-  g.deactivate_maps();
+  g.grid_receivers.B->Deactivate();
   return true;
 }
 
@@ -727,9 +844,17 @@ bool TranslucentActorState::run_surfels(
   vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error)
 {
   Gpu& g = *gpu_;
-  const std::string fs = WithPieces(sss_surfel_resolve_fs, gather_source(settings));
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(sss_surfel_resolve_vs, fs.c_str(), "");
+  const bool use_grid = static_cast<bool>(g.grid);
+  const bool near_only = settings.strategy == KernelStrategy::GridNear;
+  const bool gather_here = !use_grid || near_only;
+  const double r0 = use_grid ? settings.near_field_cells * g.grid->spacing() : 0.0;
+  if (gather_here &&
+    !gather_at_receivers(window, settings, g.surfel_receivers, near_only ? 1 : 0, r0, 2.0 * r0, error))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    sss_surfel_resolve_vs, sss_surfel_resolve_fs, "");
   if (!program)
   {
     error = "the per-surfel shaders did not compile";
@@ -739,13 +864,9 @@ bool TranslucentActorState::run_surfels(
   PointPassState point_pass(state);
 
   ProgramVAO& pv = g.resolve_vao;
-  pv.bind(program, g.points, "pointLocal");
-  g.activate_maps();
-  const bool use_grid = static_cast<bool>(g.grid);
-  const bool near_only = settings.strategy == KernelStrategy::GridNear;
-  const bool gather_here = !use_grid || near_only;
-  const double r0 = use_grid ? settings.near_field_cells * g.grid->spacing() : 0.0;
-  set_gather_uniforms(program, settings, near_only ? 1 : 0, r0, 2.0 * r0);
+  pv.bind(program, g.points, "pointLocal", g.surfel_receivers.texel, "gatheredTexel");
+  g.surfel_receivers.B->Activate();
+  program->SetUniformi("gathered", g.surfel_receivers.B->GetTextureUnit());
   program->SetUniformi("gatherAtSurfel", gather_here ? 1 : 0);
   program->SetUniformi("useGrid", use_grid ? 1 : 0);
   // A sampler3D must not share a texture unit with the maps' sampler2Ds, even unused.
@@ -788,6 +909,44 @@ bool TranslucentActorState::run_surfels(
   {
     units->Free(spare_unit);
   }
+  g.surfel_receivers.B->Deactivate();
+  return true;
+}
+
+bool TranslucentActorState::gather_at_receivers(vtkOpenGLRenderWindow* window,
+  const GpuSettings& settings, ReceiverList& receivers, int part, double r0, double r1,
+  std::string& error)
+{
+  Gpu& g = *gpu_;
+  const std::string fs = WithPieces(sss_gather_receivers_fs, gather_source(settings));
+  if (g.gather_quad && g.gather_quad_source != fs)
+  {
+    g.gather_quad->ReleaseGraphicsResources(window);
+    g.gather_quad.reset();
+  }
+  g.gather_quad_source = fs;
+  vtkShaderProgram* program = ready_quad(g.gather_quad, window, fs.c_str());
+  if (!program)
+  {
+    error = "the receivers' gather shader did not compile";
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  PointPassState point_pass(state);
+  g.activate_maps();
+  receivers.points->Activate();
+  set_gather_uniforms(program, settings, part, r0, r1);
+  program->SetUniformi("receivers", receivers.points->GetTextureUnit());
+  state->PushFramebufferBindings();
+  g.gather_fbo->SetContext(window);
+  g.gather_fbo->Bind();
+  g.gather_fbo->AddColorAttachment(0, receivers.B);
+  g.gather_fbo->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, receivers.width, receivers.height);
+  g.gather_quad->Render();
+  g.gather_fbo->RemoveColorAttachments(1);
+  state->PopFramebufferBindings();
+  receivers.points->Deactivate();
   g.deactivate_maps();
   return true;
 }

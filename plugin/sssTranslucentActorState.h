@@ -72,6 +72,8 @@ struct StepReport
   double texel_mm = 0, grid_spacing_mm = 0;
 };
 
+struct ReceiverList;
+
 constexpr int kMaxLights = 4;
 constexpr int kMaxLevels = 15;
 
@@ -111,6 +113,9 @@ private:
   bool run_virtual_points(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
     std::string& error);
   bool run_surfels(vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error);
+  // B (eq. 17) at every receiver of the list into its B texture, by one quad over the list.
+  bool gather_at_receivers(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
+    ReceiverList& receivers, int part, double r0, double r1, std::string& error);
   void set_gather_uniforms(vtkShaderProgram* program, const GpuSettings& settings, int part,
     double r0, double r1);
   std::string gather_source(const GpuSettings& settings) const;

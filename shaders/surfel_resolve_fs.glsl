@@ -1,8 +1,9 @@
 //VTK::System::Dec
-// Step 2, per surfel: B at the surfel = its own gather (all of the kernel, or the near part)
-// plus the far part interpolated trilinearly from the virtual points.
+// Step 2, per surfel: B at the surfel = its own gather (all of the kernel, or the near part,
+// from the receivers' pass) plus the far part interpolated trilinearly from the virtual points.
 
 flat in vec3 receiver;
+flat in ivec2 gatheredAt;  // the surfel's texel in the receivers' pass
 
 uniform bool useGrid;
 uniform sampler3D gridRadiance;  // (B, 1) at kept points, 0 at pruned ones
@@ -10,14 +11,13 @@ uniform vec3 gridOrigin;         // local mm
 uniform float gridSpacing;       // mm
 uniform vec3 gridDims;
 uniform bool gatherAtSurfel;
-
-//SSS::Gather::Dec
+uniform sampler2D gathered;  // B of the receivers' pass
 
 //VTK::Output::Dec
 
 void main()
 {
-  vec3 B = gatherAtSurfel ? gatherB(receiver) : vec3(0.0);
+  vec3 B = gatherAtSurfel ? texelFetch(gathered, gatheredAt, 0).rgb : vec3(0.0);
   if (useGrid)
   {
     vec4 far = texture(gridRadiance, ((receiver - gridOrigin) / gridSpacing + 0.5) / gridDims);

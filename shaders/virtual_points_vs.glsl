@@ -3,15 +3,14 @@
 // radiance texture.
 
 in vec3 gridIndex;         // i, j, k of the kept point
-uniform vec3 gridOrigin;   // local mm
-uniform float gridSpacing; // mm
+in vec2 gatheredTexel;     // its texel in the receivers' pass
 uniform vec2 sliceSize;    // texels
 
-flat out vec3 pointLocal;
+flat out ivec2 gatheredAt;
 
 void main()
 {
-  pointLocal = gridOrigin + gridSpacing * gridIndex;
+  gatheredAt = ivec2(gatheredTexel);
   gl_Position = vec4((gridIndex.xy + 0.5) / sliceSize * 2.0 - 1.0, 0.0, 1.0);
   gl_PointSize = 1.0;
 }
