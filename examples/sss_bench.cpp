@@ -222,15 +222,18 @@ void write_row(std::ostream& out, const Row& r) {
   out.flush();
 }
 
+// The sweep: the paper's setting, the grid strategies by level, the per-surfel walk by map
+// size, the PCL handle's interactive and balanced qualities, and the pass's defaults.
 std::vector<Setting> sweep(bool quick) {
-  if (quick)
-    return {{"paper", 0, 512, true, false}, {"grid", 4, 1024}, {"surfel", 0, 1024},
-            {"surfel", 0, 4096, false, true}};
-  std::vector<Setting> s{{"paper", 0, 512, true, false}};
+  const Setting paper = setting_of("paper:512"), interactive = setting_of("surfel:512:0:1:1000"),
+                defaults = setting_of("surfel");
+  if (quick) return {paper, setting_of("grid:1024:4"), interactive, defaults};
+  std::vector<Setting> s{paper, interactive, setting_of("surfel:1024:0:0.8:4")};
   for (const char* strategy : {"grid", "grid-near"})
-    for (int level : {4, 5, 6}) s.push_back({strategy, level, 4096});
-  for (int map : {512, 1024, 2048}) s.push_back({"surfel", 0, map});
-  s.push_back({"surfel", 0, 4096, false, true});  // the pass's defaults
+    for (const char* level : {"4", "5", "6"})
+      s.push_back(setting_of(std::string(strategy) + ":4096:" + level));
+  for (const char* map : {"512", "1024", "2048"}) s.push_back(setting_of(std::string("surfel:") + map));
+  s.push_back(defaults);
   return s;
 }
 

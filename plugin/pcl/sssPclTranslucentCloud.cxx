@@ -24,13 +24,18 @@
 namespace sss {
 namespace {
 
-int strategy_of(Quality quality) {
+struct QualitySettings {
+  int max_map;
+  double opening_angle, group_diffusion_lengths;
+};
+
+QualitySettings settings_of(Quality quality) {
   switch (quality) {
-    case Quality::Interactive: return vtkSubsurfacePass::PAPER;
-    case Quality::Balanced: return vtkSubsurfacePass::GRID_NEAR;
+    case Quality::Interactive: return {512, 1.0, 1000.0};
+    case Quality::Balanced: return {1024, 0.8, 4.0};
     case Quality::Accurate: break;
   }
-  return vtkSubsurfacePass::SURFEL;
+  return {4096, 0.5, 2.0};
 }
 
 // The renderers PCLVisualizer means by a viewport: all for 0, else the viewport-th one.
@@ -60,11 +65,11 @@ bool has_translucent_actor(vtkRenderer* renderer) {
 
 const char* qualityName(Quality quality) {
   switch (quality) {
-    case Quality::Interactive: return "interactive (paper)";
-    case Quality::Balanced: return "balanced (grid + near)";
+    case Quality::Interactive: return "interactive";
+    case Quality::Balanced: return "balanced";
     case Quality::Accurate: break;
   }
-  return "accurate (surfel)";
+  return "accurate";
 }
 
 TranslucentCloud::TranslucentCloud(pcl::visualization::PCLVisualizer& viewer, std::string id,
@@ -157,7 +162,13 @@ void TranslucentCloud::setLights(const std::vector<Eigen::Vector3d>& towards_lig
 
 void TranslucentCloud::setQuality(Quality quality) {
   quality_ = quality;
-  for (const auto& pass : passes_) pass->SetKernelStrategy(strategy_of(quality));
+  const QualitySettings q = settings_of(quality);
+  for (const auto& pass : passes_) {
+    pass->SetKernelStrategy(vtkSubsurfacePass::SURFEL);
+    pass->SetMaxMapSize(q.max_map);
+    pass->SetOpeningAngle(q.opening_angle);
+    pass->SetMaxGroupDiffusionLengths(q.group_diffusion_lengths);
+  }
 }
 
 void TranslucentCloud::setExposure(double exposure) {
