@@ -257,10 +257,15 @@ constexpr double kQuickSpacing = 1.0;  // mm: the quick mode's torus has about 8
 
 const std::vector<sss::DirectionalLight> kLights{{Eigen::Vector3d(-0.3, 0.5, 0.8).normalized(), 1.0}};
 
+// The reference's progress in steps of 10 %, one line each (logs stay readable).
 void print_progress(std::size_t done, std::size_t total) {
-  std::fprintf(stderr, "\r  reference: %3.0f %% (%zu of %zu points)",
-               total ? 100.0 * done / total : 100.0, done, total);
-  if (done == total) std::fprintf(stderr, "\n");
+  static std::size_t shown = 0;
+  const std::size_t tenth = total ? 10 * done / total : 10;
+  if (done == 0 || tenth < shown) shown = 0;
+  if (tenth > shown || done == total) {
+    shown = tenth;
+    std::fprintf(stderr, "  reference: %3zu %% (%zu of %zu points)\n", 10 * tenth, done, total);
+  }
 }
 
 std::vector<sss::Rgb> read_B(TranslucentScene& scene) {
