@@ -152,6 +152,25 @@ VirtualGrid VirtualGrid::prune(const LocalSurfels& surfels, int level, std::size
     grid.index_[f] = static_cast<std::int32_t>(grid.points_.size());
     grid.points_.push_back(grid.origin_ + grid.spacing_ * Eigen::Vector3d(i, j, k));
   }
+  grid.anchors_.resize(grid.points_.size());
+  const std::int64_t kept = static_cast<std::int64_t>(grid.points_.size());
+#pragma omp parallel default(none) shared(grid, tree, surfels, kept)
+  {
+    std::vector<std::vector<std::size_t>> ids;
+    std::vector<std::vector<double>> dist2;
+    double query[3];
+    flann::Matrix<double> q(query, 1, 3);
+    flann::SearchParams nearest;
+#pragma omp for schedule(dynamic, 1024)
+    for (std::int64_t v = 0; v < kept; ++v) {
+      const Eigen::Vector3d& p = grid.points_[v];
+      for (int a = 0; a < 3; ++a) query[a] = p[a];
+      tree.knnSearch(q, ids, dist2, 1, nearest);
+      const std::size_t s = ids[0][0];
+      const Eigen::Vector3d& n = surfels.normals[s];
+      grid.anchors_[v] = p - n * n.dot(p - surfels.positions[s]);
+    }
+  }
   return grid;
 }
 

@@ -36,6 +36,10 @@ class VirtualGrid {
   const std::array<int, 3>& dims() const { return dims_; }
   const Eigen::Vector3d& origin() const { return origin_; }  // first grid point, local mm
   const std::vector<Eigen::Vector3d>& points() const { return points_; }  // kept, local mm
+  // Where B is evaluated for each kept point: the point moved along the normal of its nearest
+  // surfel onto that surfel's tangent plane, so that the value interpolated between the
+  // corners is one of the surface, not of the space a cell's width above or below it.
+  const std::vector<Eigen::Vector3d>& anchors() const { return anchors_; }
 
   // Trilinear interpolation of per-kept-point values at x; corners that were pruned are left
   // out and the weights renormalised. Returns false when no corner was kept.
@@ -56,6 +60,7 @@ class VirtualGrid {
   std::array<int, 3> dims_{{0, 0, 0}};
   std::vector<std::int32_t> index_;  // dense: kept-point id or -1
   std::vector<Eigen::Vector3d> points_;
+  std::vector<Eigen::Vector3d> anchors_;
 };
 
 }  // namespace sss

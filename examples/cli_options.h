@@ -28,11 +28,11 @@ struct Options {
   int width = 512, height = 512;
   std::string method = "grid";
   std::string backend = "egl";
-  std::string strategy = "surfel";
+  std::string strategy = "grid";  // the pass's defaults
   int grid_level = 0;
-  int max_map_size = 4096;
-  double opening_angle = 0.5;
-  double group_diffusion_lengths = 2.0;
+  int max_map_size = 512;
+  double opening_angle = 2.0;
+  double group_diffusion_lengths = 1000.0;
   double exposure = 0.0;  // 0: automatic
   double texel_per_z_r = 0.25;
   int frames = 0;

@@ -57,7 +57,9 @@ options (default in brackets)
   --samples N          for given PLY meshes: N points sampled on the surface [0: vertices]
   --scale-mesh FILE    mesh the scale sweep samples [the shared dragon]
   --scale-points LIST  point counts of the scale sweep [100000,300000,1000000,2000000,5000000]
-  --scale-strategies L strategies the scale sweep times [paper,grid,surfel]
+  --scale-strategies L strategies the scale sweep times: paper (the paper's setting), grid
+                       (the pass's defaults), surfel or grid-near (the accurate setting)
+                       [paper,grid,surfel]
   --settings LIST      measure these settings instead of the sweep: comma-separated
                        strategy[:map[:level[:angle[:groups]]]] (strategy paper, grid,
                        grid-near or surfel; max map side; grid level, 0 automatic; opening
@@ -104,7 +106,7 @@ struct Setting {
   int grid_level = 0;
   int max_map = 4096;
   bool is_paper = false, is_default = false;
-  double opening_angle = 0.5, group_lengths = 2.0;  // the pass's defaults
+  double opening_angle = 0.5, group_lengths = 2.0;  // the accurate setting
 };
 
 // "strategy[:map[:level[:angle[:groups]]]]", e.g. "surfel:1024:0:0.8:4".
@@ -120,8 +122,11 @@ Setting setting_of(const std::string& text) {
   if (f.size() > 3) s.opening_angle = number("--settings", f[3]);
   if (f.size() > 4) s.group_lengths = number("--settings", f[4]);
   s.is_paper = s.strategy == "paper";
-  s.is_default = s.strategy == "surfel" && s.max_map == 4096 && s.grid_level == 0 &&
-                 s.opening_angle == 0.5 && s.group_lengths == 2.0;
+  vtkNew<vtkSubsurfacePass> pass;
+  s.is_default = sss::cli::strategy_of(s.strategy) == pass->GetKernelStrategy() &&
+                 s.max_map == pass->GetMaxMapSize() && s.grid_level == pass->GetGridLevel() &&
+                 s.opening_angle == pass->GetOpeningAngle() &&
+                 s.group_lengths == pass->GetMaxGroupDiffusionLengths();
   return s;
 }
 
@@ -222,18 +227,21 @@ void write_row(std::ostream& out, const Row& r) {
   out.flush();
 }
 
-// The sweep: the paper's setting, the grid strategies by level, the per-surfel walk by map
-// size, the PCL handle's interactive and balanced qualities, and the pass's defaults.
+// The sweep: the paper's setting, the pass's defaults (the PCL handle's interactive quality),
+// the grid strategies by level, the per-surfel walk by map size, and the handle's balanced and
+// accurate qualities.
 std::vector<Setting> sweep(bool quick) {
-  const Setting paper = setting_of("paper:512"), interactive = setting_of("surfel:512:0:1:1000"),
-                defaults = setting_of("surfel");
-  if (quick) return {paper, setting_of("grid:1024:4"), interactive, defaults};
-  std::vector<Setting> s{paper, interactive, setting_of("surfel:1024:0:0.8:4")};
+  const Setting paper = setting_of("paper:512"), defaults = setting_of("grid:512:0:2:1000"),
+                accurate = setting_of("surfel");
+  if (quick) return {paper, defaults, setting_of("surfel:512:0:1:1000"), accurate};
+  std::vector<Setting> s{paper, defaults, setting_of("grid:512:6:2:1000"),
+                         setting_of("grid:512:0:1:1000"), setting_of("surfel:512:0:1:1000"),
+                         setting_of("surfel:1024:0:0.8:4")};
   for (const char* strategy : {"grid", "grid-near"})
     for (const char* level : {"4", "5", "6"})
       s.push_back(setting_of(std::string(strategy) + ":4096:" + level));
   for (const char* map : {"512", "1024", "2048"}) s.push_back(setting_of(std::string("surfel:") + map));
-  s.push_back(defaults);
+  s.push_back(accurate);
   return s;
 }
 
@@ -406,7 +414,10 @@ void run_scale(const Options& o, std::ostream& csv) {
       row.points = cloud.surfels.size();
       row.material = material.name;
       row.plain_points_s = plain;
-      Setting s{strategy, 0, strategy == "paper" ? 512 : 4096, strategy == "paper", false};
+      // paper: the paper's setting; grid: the pass's defaults; the others at the accurate one.
+      const Setting s = setting_of(strategy == "paper" ? "paper:512"
+                                   : strategy == "grid" ? "grid:512:0:2:1000"
+                                                        : strategy);
       measure(scene, s, o.frames, row);
       row.peak_rss_mb = peak_rss_mb();
       print_row(row);

@@ -48,6 +48,9 @@ namespace
 {
 // Sources beyond this distance carry less than this fraction of the kernel's integral.
 constexpr double kSupportFraction = 1e-7;
+// An automatic grid level keeps at most this many virtual points (the paper kept 13-19 k):
+// the virtual points' walk is then about as costly as the paper's taps.
+constexpr std::size_t kVirtualPointBudget = 16384;
 constexpr int kListWidth = 256;  // a squarish list keeps the rasteriser's tiles (threads) busy
 
 struct LevelRect
@@ -431,6 +434,7 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
   {
     VirtualGridSettings grid_settings;
     grid_settings.level = settings.grid_level;
+    grid_settings.point_budget = kVirtualPointBudget;
     try
     {
       g.grid = std::make_unique<VirtualGrid>(VirtualGrid::build(g.local, *g.dipole, grid_settings));
@@ -469,7 +473,11 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
       ++g.slice_range[k].second;
       indices.insert(indices.end(),
         { static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()) });
-      receivers.push_back(grid.origin() + grid.spacing() * c.matrix());
+      // The paper evaluates B at the grid points themselves; the other strategies at the
+      // points' anchors on the surface.
+      receivers.push_back(settings.strategy == KernelStrategy::Paper
+          ? grid.points()[order[r]]
+          : grid.anchors()[order[r]]);
     }
     g.grid_receivers.upload(window, receivers);
     g.grid_index->Upload(indices, vtkOpenGLBufferObject::ArrayBuffer);
@@ -621,8 +629,18 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     error = msg.str();
     return false;
   }
-  if (atlas_w != g.atlas_width || atlas_h != g.atlas_height || !g.atlas_point)
+  // A moving light changes the maps' shapes every frame, and reallocating six textures each
+  // time costs more than unused texels: the atlas is kept while it is large enough and no
+  // more than four times the area needed (a smaller map size setting frees it).
+  const bool fits = atlas_w <= g.atlas_width && atlas_h <= g.atlas_height;
+  const bool oversized = 4.0 * atlas_w * atlas_h < double(g.atlas_width) * g.atlas_height;
+  if (!fits || oversized || !g.atlas_point)
   {
+    if (!oversized)
+    {
+      atlas_w = std::max(atlas_w, g.atlas_width);
+      atlas_h = std::max(atlas_h, g.atlas_height);
+    }
     g.atlas_point = float_texture_2d(window, atlas_w, atlas_h);
     g.atlas_power = float_texture_2d(window, atlas_w, atlas_h);
     g.atlas_normal = float_texture_2d(window, atlas_w, atlas_h);

@@ -30,20 +30,20 @@ namespace sss
 enum class KernelStrategy
 {
   Paper = 0,     // 512 map, 49 Gaussian taps in a 40 x 40 window, grid only
-  Grid = 1,      // tree walk at the virtual points, grid only
+  Grid = 1,      // tree walk at the virtual points' surface anchors, grid only
   GridNear = 2,  // far part on the grid, near part per surfel
   Surfel = 3     // tree walk at every surfel, no grid
 };
 
 struct GpuSettings
 {
-  KernelStrategy strategy = KernelStrategy::Surfel;
-  double opening_angle = 0.5;
-  double max_group_diffusion_lengths = 2.0;
+  KernelStrategy strategy = KernelStrategy::Grid;
+  double opening_angle = 2.0;
+  double max_group_diffusion_lengths = 1000.0;
   double near_field_cells = 2.0;
   int grid_level = 0;
   double texel_per_z_r = 0.25;
-  int max_map_size = 4096;
+  int max_map_size = 512;
   bool operator==(const GpuSettings& o) const
   {
     return strategy == o.strategy && opening_angle == o.opening_angle &&

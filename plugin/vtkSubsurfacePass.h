@@ -15,10 +15,17 @@
  * move runs step 3 alone. Other actors draw as before.
  *
  * The kernel strategy chooses how B is summed (KernelStrategy): PAPER is the paper's 49
- * Gaussian taps over a 40 x 40 window of a 512 x 512 map with the grid alone; GRID walks the
- * map's pyramid at the virtual points (grid alone); GRID_NEAR carries the far part on the grid
- * and sums the near part at each surfel; SURFEL (the default, the most accurate per second
- * measured) walks the pyramid at every surfel. All sums reach as far as the material's kernel does (1e-7 of its integral).
+ * Gaussian taps over a 40 x 40 window of a 512 x 512 map at the grid points; GRID (the
+ * default) walks the map's pyramid at the virtual points, each moved onto the surface along
+ * its nearest surfel's normal (grid alone); GRID_NEAR carries the far part on the grid and
+ * sums the near part at each surfel; SURFEL walks the pyramid at every surfel. All sums
+ * reach as far as the material's kernel does (1e-7 of its integral).
+ *
+ * The defaults (GRID, 512 map, opening angle 2, no group limit, at most 16384 virtual
+ * points) cost what the paper's setting costs and are more accurate than it (about 15-30 %
+ * mean error on the Stanford bunny against the paper's 23-35 %); SURFEL with a 4096 map,
+ * opening angle 0.5 and groups of 2 diffusion lengths is under 1 % at 15-30 times the cost
+ * of a light change (docs/benchmark/bench.md).
  */
 #ifndef vtkSubsurfacePass_h
 #define vtkSubsurfacePass_h
@@ -48,7 +55,7 @@ public:
   };
 
   ///@{
-  /** How B is summed (see the class comment). Default SURFEL. */
+  /** How B is summed (see the class comment). Default GRID. */
   vtkSetClampMacro(KernelStrategy, int, PAPER, SURFEL);
   vtkGetMacro(KernelStrategy, int);
   ///@}
@@ -56,7 +63,7 @@ public:
   ///@{
   /**
    * Pyramid walk: a group of map texels counts as one source once its size is below this
-   * fraction of its distance (default 0.5; smaller is more accurate and slower).
+   * fraction of its distance (default 2; smaller is more accurate and slower).
    */
   vtkSetClampMacro(OpeningAngle, double, 0.05, 2.0);
   vtkGetMacro(OpeningAngle, double);
@@ -66,7 +73,8 @@ public:
   /**
    * Pyramid walk: a group also counts as one source only while it spans at most this many
    * diffusion lengths (1 / s_tr) of every channel whose kernel still matters at its distance;
-   * over more, the kernel's exponential leaves its second-order expansion (default 2).
+   * over more, the kernel's exponential leaves its second-order expansion (default 1000: no
+   * limit in practice; 2 keeps strongly absorbing channels accurate at a fine setting).
    */
   vtkSetClampMacro(MaxGroupDiffusionLengths, double, 0.1, VTK_DOUBLE_MAX);
   vtkGetMacro(MaxGroupDiffusionLengths, double);
@@ -84,7 +92,7 @@ public:
   ///@{
   /**
    * Virtual grid: 2^GridLevel points per axis; 0 (default) chooses from the material's
-   * diffusion length and a budget of 65536 kept points.
+   * diffusion length and a budget of 16384 kept points (the paper kept 13-19 k).
    */
   vtkSetClampMacro(GridLevel, int, 0, 10);
   vtkGetMacro(GridLevel, int);
@@ -93,7 +101,7 @@ public:
   ///@{
   /**
    * Illumination map texel as a fraction of the material's smallest z_r (default 0.25), and
-   * the largest map side (default 4096). PAPER always uses a 512 x 512 map.
+   * the largest map side (default 512). PAPER always uses a 512 x 512 map.
    */
   vtkSetClampMacro(TexelPerZr, double, 0.01, 64.0);
   vtkGetMacro(TexelPerZr, double);
@@ -184,13 +192,13 @@ protected:
   vtkSubsurfacePass();
   ~vtkSubsurfacePass() override;
 
-  int KernelStrategy = SURFEL;
-  double OpeningAngle = 0.5;
-  double MaxGroupDiffusionLengths = 2.0;
+  int KernelStrategy = GRID;
+  double OpeningAngle = 2.0;
+  double MaxGroupDiffusionLengths = 1000.0;
   double NearFieldCells = 2.0;
   int GridLevel = 0;
   double TexelPerZr = 0.25;
-  int MaxMapSize = 4096;
+  int MaxMapSize = 512;
   double Exposure = 1.0;
   bool CaptureLinearImage = false;
   bool MeasureStepTimes = false;

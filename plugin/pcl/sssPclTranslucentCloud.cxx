@@ -25,17 +25,22 @@ namespace sss {
 namespace {
 
 struct QualitySettings {
+  int strategy;
   int max_map;
   double opening_angle, group_diffusion_lengths;
 };
 
 QualitySettings settings_of(Quality quality) {
   switch (quality) {
-    case Quality::Interactive: return {512, 1.0, 1000.0};
-    case Quality::Balanced: return {1024, 0.8, 4.0};
+    case Quality::Interactive: {
+      vtkNew<vtkSubsurfacePass> defaults;
+      return {defaults->GetKernelStrategy(), defaults->GetMaxMapSize(),
+              defaults->GetOpeningAngle(), defaults->GetMaxGroupDiffusionLengths()};
+    }
+    case Quality::Balanced: return {vtkSubsurfacePass::SURFEL, 1024, 0.8, 4.0};
     case Quality::Accurate: break;
   }
-  return {4096, 0.5, 2.0};
+  return {vtkSubsurfacePass::SURFEL, 4096, 0.5, 2.0};
 }
 
 // The renderers PCLVisualizer means by a viewport: all for 0, else the viewport-th one.
@@ -164,7 +169,7 @@ void TranslucentCloud::setQuality(Quality quality) {
   quality_ = quality;
   const QualitySettings q = settings_of(quality);
   for (const auto& pass : passes_) {
-    pass->SetKernelStrategy(vtkSubsurfacePass::SURFEL);
+    pass->SetKernelStrategy(q.strategy);
     pass->SetMaxMapSize(q.max_map);
     pass->SetOpeningAngle(q.opening_angle);
     pass->SetMaxGroupDiffusionLengths(q.group_diffusion_lengths);

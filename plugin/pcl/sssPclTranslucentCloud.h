@@ -26,20 +26,20 @@ class PCLVisualizer;
 namespace sss {
 
 // How B is summed when a light, the geometry or the material changes (the camera alone never
-// re-runs it): all three walk the illumination map's pyramid at every surfel
-// (vtkSubsurfacePass::SURFEL), trading accuracy for time. Costs and errors per setting are in
+// re-runs it), trading accuracy for time. Costs and errors per setting are in
 // docs/benchmark/bench.md.
 enum class Quality {
-  Interactive,  // 512 map, opening angle 1, no group limit: the paper's cost, a few % error
-  Balanced,     // 1024 map, opening angle 0.8, groups of 4 diffusion lengths: about 1 %
-  Accurate,     // the pass's defaults (4096 map, 0.5, 2): under 0.5 % mean error
+  Interactive,  // the pass's defaults (GRID, 512 map, opening angle 2, at most 16384 virtual
+                // points): the paper's cost, 15-30 % mean error, more accurate than the paper
+  Balanced,     // SURFEL, 1024 map, opening angle 0.8, groups of 4 diffusion lengths: 1-3 %
+  Accurate,     // SURFEL, 4096 map, opening angle 0.5, groups of 2: under 1 % mean error
 };
 const char* qualityName(Quality quality);
 
 struct TranslucentCloudOptions {
   std::string material = "marble";  // a vtkTranslucentMaterial preset
   double millimetres_per_unit = 1.0;
-  Quality quality = Quality::Accurate;
+  Quality quality = Quality::Interactive;  // as the pass's defaults
   SurfelOptions surfels;
   int viewport = 0;  // PCLVisualizer viewport; 0: every renderer of the window
 };
