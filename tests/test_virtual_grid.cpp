@@ -50,6 +50,30 @@ TEST(VirtualGrid, PrunedToTheSurfaceAndEveryCellComplete) {
   EXPECT_LT(grid.points().size(), dense / 2);
 }
 
+// Each kept point's anchor is the point moved along its nearest surfel's normal onto that
+// surfel's tangent plane: on a sphere, it lies on the surface to within the facet's sag
+// (h^2 / 2R for a surfel h away), and it keeps the point's direction from the centre.
+TEST(VirtualGrid, AnchorsLieOnTheSurfaceBelowTheirPoints) {
+  const double r = 50.0;
+  const LocalSurfels sphere = LocalSurfels::from(make_sphere(r, 0.5), 1.0);
+  const VirtualGrid grid = VirtualGrid::build(sphere, kMarble, level(5));
+  ASSERT_EQ(grid.anchors().size(), grid.points().size());
+  const Eigen::Vector3d centre = sphere.bounds.center();
+  double worst_radius = 0.0, worst_direction = 1.0, largest_move = 0.0;
+  for (std::size_t i = 0; i < grid.points().size(); ++i) {
+    const Eigen::Vector3d p = grid.points()[i] - centre, a = grid.anchors()[i] - centre;
+    worst_radius = std::max(worst_radius, std::abs(a.norm() - r));
+    worst_direction = std::min(worst_direction, a.normalized().dot(p.normalized()));
+    largest_move = std::max(largest_move, (a - p).norm());
+  }
+  // Spacing 0.5 mm: the nearest surfel is within ~0.35 mm laterally, a sag under 0.01 mm.
+  EXPECT_LT(worst_radius, 0.01);
+  EXPECT_GT(worst_direction, 0.9999);
+  // Kept points lie within one cell diagonal of the surface, so no anchor moves further.
+  EXPECT_LE(largest_move, std::sqrt(3.0) * grid.spacing() + 1e-9);
+  EXPECT_GT(largest_move, 0.5 * grid.spacing());
+}
+
 TEST(VirtualGrid, AutomaticLevelFollowsDiffusionLengthAndBudget) {
   const LocalSurfels sphere = LocalSurfels::from(make_sphere(50, 1.0), 1.0);
   VirtualGridSettings s;
