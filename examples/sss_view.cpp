@@ -34,9 +34,10 @@ options (default in brackets)
                        skin1 skin2 spectralon wholemilk [marble]
   --mm-per-unit F      millimetres per scene unit, e.g. 1000 for a scan in metres [1]
   --quality Q          interactive | balanced | accurate: how finely B is summed when the
-                       light or material changes (interactive: the 2005 paper's cost, a few
-                       % mean error; balanced: about 1 %; accurate: under 0.5 %, several
-                       times slower) [interactive]
+                       light or material changes (interactive: the pass's defaults, at most
+                       the 2005 paper's cost and more accurate than it, 15-30 % mean error;
+                       balanced: 1-3 %, about 20x slower; accurate: under 1 %, about 60x
+                       slower) [interactive]
   --samples N          sample N points on a PLY mesh's surface instead of its vertices [0]
   --size WxH           window size in pixels [1024x768]
   --keys STRING        press these keys one per frame after the first (scripted demos)

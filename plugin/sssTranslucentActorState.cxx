@@ -51,6 +51,8 @@ constexpr double kSupportFraction = 1e-7;
 // An automatic grid level keeps at most this many virtual points (the paper kept 13-19 k):
 // the virtual points' walk is then about as costly as the paper's taps.
 constexpr std::size_t kVirtualPointBudget = 16384;
+// The paper's grid: 64 points per axis (13-19 k kept on its scans), its automatic level.
+constexpr int kPaperGridLevel = 6;
 constexpr int kListWidth = 256;  // a squarish list keeps the rasteriser's tiles (threads) busy
 
 struct LevelRect
@@ -433,7 +435,9 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
   if (settings.strategy != KernelStrategy::Surfel)
   {
     VirtualGridSettings grid_settings;
-    grid_settings.level = settings.grid_level;
+    grid_settings.level = settings.grid_level == 0 && settings.strategy == KernelStrategy::Paper
+      ? kPaperGridLevel
+      : settings.grid_level;
     grid_settings.point_budget = kVirtualPointBudget;
     try
     {

@@ -92,7 +92,7 @@ public:
   ///@{
   /**
    * Virtual grid: 2^GridLevel points per axis; 0 (default) chooses from the material's
-   * diffusion length and a budget of 16384 kept points (the paper kept 13-19 k).
+   * diffusion length and a budget of 16384 kept points; for PAPER, the paper's 64 per axis.
    */
   vtkSetClampMacro(GridLevel, int, 0, 10);
   vtkGetMacro(GridLevel, int);

@@ -135,9 +135,15 @@ TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
   for (std::size_t i = 0; i < ketchup.size(); i += 3) red += ketchup[i], blue += ketchup[i + 2];
   std::printf("ketchup: summed B red / blue = %.1f\n", red / blue);
   EXPECT_GT(red, 20.0 * blue);
-  handle->setQuality(sss::Quality::Interactive);
-  EXPECT_EQ(handle->pass()->GetMaxMapSize(), 512);
-  EXPECT_EQ(handle->pass()->GetOpeningAngle(), 1.0);
+  handle->setQuality(sss::Quality::Accurate);
+  EXPECT_EQ(handle->pass()->GetKernelStrategy(), vtkSubsurfacePass::SURFEL);
+  EXPECT_EQ(handle->pass()->GetMaxMapSize(), 4096);
+  EXPECT_EQ(handle->pass()->GetOpeningAngle(), 0.5);
+  handle->setQuality(sss::Quality::Interactive);  // the pass's defaults
+  vtkNew<vtkSubsurfacePass> defaults;
+  EXPECT_EQ(handle->pass()->GetKernelStrategy(), defaults->GetKernelStrategy());
+  EXPECT_EQ(handle->pass()->GetMaxMapSize(), defaults->GetMaxMapSize());
+  EXPECT_EQ(handle->pass()->GetOpeningAngle(), defaults->GetOpeningAngle());
 
   EXPECT_TRUE(viewer.removeShape("sphere"));
   EXPECT_FALSE(viewer.contains("sphere"));
