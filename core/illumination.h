@@ -1,5 +1,7 @@
-// Lit source elements: the texels of an illumination map rendered from each directional light
-// (the paper's step 1), each carrying E dA of eq. 15-16.
+// The light's view (the paper's step 1): an illumination map rendered from each directional
+// light over the surfel discs with a depth test. Its texels are the far field's lit source
+// elements, each carrying E dA of eq. 15-16; its depths tell the near field which points of a
+// receiver's local surface the light reaches.
 #pragma once
 
 #include <Eigen/Core>
@@ -8,6 +10,7 @@
 
 #include "disc_raster.h"
 #include "dipole.h"
+#include "local_surface.h"
 #include "local_surfels.h"
 #include "material.h"
 
@@ -35,18 +38,29 @@ struct IlluminationSettings {
 };
 
 struct IlluminationSamples {
-  std::vector<Eigen::Vector3d> position;  // local mm, on the disc seen by the light
+  std::vector<Eigen::Vector3d> position;  // local mm, on the local surface of the disc seen
   std::vector<Eigen::Vector3d> normal;    // unit, turned towards the light
   std::vector<Rgb> power;                 // E dA per channel: irradiance * Ft(eta, theta_i) * texel area
   std::vector<std::uint16_t> light;       // which light's map the sample came from
   std::vector<OrthoView> maps;            // one per light
+  std::vector<DiscHits> hits;             // per light: the disc each texel sees, and its depth
+  std::vector<DirectionalLight> lights;   // as given, directions normalised
   std::size_t size() const { return position.size(); }
 };
 
 // The illumination map of eq. 15 as point sources. Only what a light sees is lit
 // (self-shadowing), and the cosine of eq. 15 cancels against the texel's surface area
 // texel_area / cos(theta_i). Normals are turned towards the light, so a cloud with
-// inconsistently oriented normals is lit on the side the light sees.
+// inconsistently oriented normals is lit on the side the light sees. Where the surfels carry
+// a curvature, each texel's point and normal are taken on its disc's local surface
+// (local_surface.h) rather than on the flat disc; texels whose lifted normal turns away from
+// the light (past the terminator) carry no light.
+// The point the map sees at texel (i, j) (which must hit a disc), on the local surface of
+// that disc when the surfels carry a curvature (clamped at one over the disc radius), with its
+// normal there (the disc's own orientation, not turned towards the light).
+SurfacePoint seen_point(const LocalSurfels& surfels, const OrthoView& map, const DiscHits& hits,
+                        int i, int j);
+
 IlluminationSamples illuminate(const LocalSurfels& surfels, const Material& material,
                                const std::vector<DirectionalLight>& lights,
                                const IlluminationSettings& settings);

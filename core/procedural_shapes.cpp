@@ -90,4 +90,23 @@ SurfelCloud make_sphere(double r, double spacing) {
   return cloud;
 }
 
+SurfelCloud make_fibonacci_sphere(double r, int count) {
+  check(r, "radius");
+  if (count < 2) throw std::invalid_argument("[sss::procedural_shapes] count must be >= 2");
+  SurfelCloud cloud;
+  const double golden_angle = kPi * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / count;
+    const double ring = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = golden_angle * i;
+    const Eigen::Vector3d n(ring * std::cos(phi), ring * std::sin(phi), z);
+    cloud.positions.push_back(r * n);
+    cloud.normals.push_back(n);
+  }
+  cloud.radius = r;  // any positive value passes validation; the spacing follows
+  cloud.validate();
+  cloud.radius = 1.5 * cloud.mean_spacing();
+  return cloud;
+}
+
 }  // namespace sss

@@ -19,4 +19,8 @@ SurfelCloud make_line(int count, double spacing);
 // A sphere of radius r in latitude rings about `spacing` apart, normals outward.
 SurfelCloud make_sphere(double r, double spacing);
 
+// `count` points on a sphere of radius r on a Fibonacci lattice (even density, no rings),
+// normals outward, disc radius 1.5 mean nearest-neighbour spacings as the PCL glue takes it.
+SurfelCloud make_fibonacci_sphere(double r, int count);
+
 }  // namespace sss

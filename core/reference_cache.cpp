@@ -172,6 +172,12 @@ ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material
   h.add(settings.tree.theta);
   h.add_word(signed_word(settings.tree.leaf_size));
   h.add(settings.tree.kernel_tolerance);
+  h.add_word(signed_word(settings.near.quadrature.rings));
+  h.add_word(signed_word(settings.near.quadrature.min_nodes));
+  h.add_word(signed_word(settings.near.quadrature.max_nodes));
+  h.add(settings.near.occluder_height_in_radii);
+  h.add_word(settings.receivers.size());
+  for (std::size_t i : settings.receivers) h.add_word(i);
 
   ReferenceKey key;
   key.hash = h.value();
@@ -231,12 +237,12 @@ std::optional<SurfelRadiance> load_cached_reference(const std::filesystem::path&
   s.texel_mm = in.real();
   s.map_width = int_of(in.word());
   s.map_height = int_of(in.word());
-  s.virtual_points = in.word();
-  s.grid_level = int_of(in.word());
-  s.grid_spacing_mm = in.real();
+  s.near_nodes = in.word();
+  s.split_r0_mm = in.real();
+  s.split_r1_mm = in.real();
   s.seconds_illumination = in.real();
   s.seconds_tree = in.real();
-  s.seconds_virtual_points = in.real();
+  s.seconds_geometry = in.real();
   s.seconds_surfels = in.real();
   result.B.resize(key.surfels);
   for (Rgb& b : result.B)
@@ -264,12 +270,12 @@ void store_cached_reference(const std::filesystem::path& dir, const ReferenceKey
   out.real(s.texel_mm);
   out.word(signed_word(s.map_width));
   out.word(signed_word(s.map_height));
-  out.word(s.virtual_points);
-  out.word(signed_word(s.grid_level));
-  out.real(s.grid_spacing_mm);
+  out.word(s.near_nodes);
+  out.real(s.split_r0_mm);
+  out.real(s.split_r1_mm);
   out.real(s.seconds_illumination);
   out.real(s.seconds_tree);
-  out.real(s.seconds_virtual_points);
+  out.real(s.seconds_geometry);
   out.real(s.seconds_surfels);
   for (const Rgb& b : radiance.B)
     for (double c : b) out.real(c);

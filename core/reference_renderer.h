@@ -1,21 +1,41 @@
-// The CPU reference: eq. 16 evaluated at every surfel over all lit source elements, in double
-// precision and in parallel; the ground truth for the grid method and the GPU path.
+// The CPU reference: eq. 16 evaluated at every surfel, in double precision and in parallel;
+// the ground truth for the GPU path. B = near field + far field, split by NearFarSplit: the
+// near field integrated on each receiver's local surface with a fine quadrature against the
+// light's map (near_field.h), the far field summed over every lit texel of the light's map,
+// lifted onto its disc's local surface, by the source tree (source_tree.h).
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "illumination.h"
 #include "local_surfels.h"
+#include "near_far_split.h"
+#include "near_field.h"
 #include "progress.h"
 #include "source_tree.h"
 #include "surfel_cloud.h"
 
 namespace sss {
 
+// The reference's near-field quadrature: refining it further changes B by well under 0.1 %
+// (tests/test_reference.cpp).
+inline NearFieldSettings reference_near_field() {
+  NearFieldSettings s;
+  s.quadrature.rings = 24;
+  s.quadrature.min_nodes = 8;
+  s.quadrature.max_nodes = 48;
+  return s;
+}
+
 struct ReferenceSettings {
   IlluminationSettings illumination;
   SourceTreeSettings tree;
+  NearFieldSettings near = reference_near_field();
+  // Empty: B at every surfel. Otherwise only at these surfels (indices into the validated
+  // cloud); the others are NaN. Large scans are compared on a sample of their points.
+  std::vector<std::size_t> receivers;
   Progress progress;  // optional
 };
 
@@ -24,10 +44,10 @@ struct RadianceStats {
   std::size_t lit_samples = 0;
   double texel_mm = 0.0;           // illumination-map texel of the first light
   int map_width = 0, map_height = 0;
-  std::size_t virtual_points = 0;  // grid method only
-  int grid_level = 0;              // grid method only: 2^level points per axis
-  double grid_spacing_mm = 0.0;    // grid method only
-  double seconds_illumination = 0, seconds_tree = 0, seconds_virtual_points = 0,
+  std::size_t near_nodes = 0;      // per receiver and light
+  double split_r0_mm = 0.0;        // 0 when the near field takes the whole kernel
+  double split_r1_mm = 0.0;        // the near field's reach
+  double seconds_illumination = 0, seconds_tree = 0, seconds_geometry = 0,
          seconds_surfels = 0;
 
   void record_sources(const IlluminationSamples& samples, std::size_t surfel_count);
@@ -39,28 +59,38 @@ struct SurfelRadiance {
   RadianceStats stats;
 };
 
-// Lit sources and their tree for one cloud, material and set of lights: B anywhere.
+// The light's map, its samples and the near-far split for one cloud, material and set of
+// lights: B at any surfel.
 class ReferenceSolver {
  public:
   // The cloud must have been validated (SurfelCloud::validate); throws std::invalid_argument
   // for a bad material, light or setting.
   ReferenceSolver(const SurfelCloud& cloud, const Material& material,
                   const std::vector<DirectionalLight>& lights,
-                  const IlluminationSettings& illumination, const SourceTreeSettings& tree);
+                  const ReferenceSettings& settings = {});
 
-  // B at a point given in scene units.
-  Rgb B_at(const Eigen::Vector3d& scene_point,
-           const KernelWindow& window = KernelWindow::all()) const;
+  // B (eq. 17) at surfel `index`: near field plus far field.
+  Rgb B(std::size_t index) const;
+  // The light's samples alone, summed by the source tree over the part of the kernel `window`
+  // keeps, at a point in scene units (the far field's sum, open to tests).
+  Rgb sources_B_at(const Eigen::Vector3d& scene_point, const KernelWindow& window) const;
 
   const LocalSurfels& surfels() const { return surfels_; }
   const IlluminationSamples& samples() const { return samples_; }
-  const SourceTree& tree() const { return *tree_; }
+  const NearFarSplit& split() const { return split_; }
+  const NearField& near_field() const { return *near_; }
+  const SourceTree& tree() const;
   const RadianceStats& stats() const { return stats_; }
 
  private:
   LocalSurfels surfels_;
   IlluminationSamples samples_;
-  std::unique_ptr<SourceTree> tree_;
+  NearFarSplit split_;
+  Dipole dipole_;
+  SourceTreeSettings tree_settings_;
+  std::unique_ptr<NearField> near_;
+  mutable std::once_flag tree_built_;
+  mutable std::unique_ptr<SourceTree> tree_;
   RadianceStats stats_;
 };
 

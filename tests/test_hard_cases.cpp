@@ -6,7 +6,6 @@
 
 #include "camera_view.h"
 #include "fresnel.h"
-#include "grid_renderer.h"
 #include "procedural_shapes.h"
 #include "reference_renderer.h"
 
@@ -30,6 +29,13 @@ void expect_finite_nonnegative(const std::vector<Rgb>& B) {
     }
 }
 
+std::size_t centre_of(const SurfelCloud& cloud) {
+  std::size_t centre = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (cloud.positions[i].norm() < cloud.positions[centre].norm()) centre = i;
+  return centre;
+}
+
 double max_relative_difference(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
   double worst = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -45,8 +51,8 @@ TEST(HardCases, NoAbsorption) {
   const Dipole dipole(m);
   const double rho = 60.0;
   const SurfelCloud slab = make_slab(rho, 1.0);
-  const ReferenceSolver solver(slab, m, kTopLight, IlluminationSettings{}, SourceTreeSettings{});
-  const Rgb B = solver.B_at(Eigen::Vector3d::Zero());
+  const ReferenceSolver solver(slab, m, kTopLight);
+  const Rgb B = solver.B(centre_of(slab));
   for (int c = 0; c < 3; ++c) {
     const double Ft0 = fresnel_transmittance(1.3, 1.0);
     EXPECT_NEAR(B[c] / (Ft0 * dipole.channel[c].disc_reflectance(rho) / M_PI), 1.0, 0.01) << c;
@@ -74,7 +80,6 @@ TEST(HardCases, EmptyCloud) {
   const SurfelCloud empty;
   const Material m = Material::preset("marble");
   EXPECT_TRUE(render_reference(empty, m, kTopLight).B.empty());
-  EXPECT_TRUE(render_grid(empty, m, kTopLight).B.empty());
   const LinearImage image = render_view(empty, m, {}, OrthoCamera{});
   EXPECT_EQ(image.max_value(), 0.0);
 }
@@ -83,9 +88,7 @@ TEST(HardCases, LineCloud) {
   const SurfelCloud line = make_line(200, 0.1);
   const Material m = Material::preset("marble");
   const SurfelRadiance ref = render_reference(line, m, kTopLight);
-  const SurfelRadiance grid = render_grid(line, m, kTopLight);
   expect_finite_nonnegative(ref.B);
-  expect_finite_nonnegative(grid.B);
   EXPECT_GT(ref.B[100][0], 0.0);
 }
 
@@ -185,9 +188,9 @@ TEST(HardCases, IndexOfOneHasNoFresnelLoss) {
   const Material m = Material::preset("marble", 1.0);
   const Dipole dipole(m);
   const double rho = dipole.max_support_radius(1e-3);
-  const ReferenceSolver solver(make_slab(rho, 0.5), m, kTopLight, IlluminationSettings{},
-                               SourceTreeSettings{});
-  const Rgb B = solver.B_at(Eigen::Vector3d::Zero());
+  const SurfelCloud slab = make_slab(rho, 0.5);
+  const ReferenceSolver solver(slab, m, kTopLight);
+  const Rgb B = solver.B(centre_of(slab));
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(B[c] / (dipole.channel[c].total_diffuse_reflectance() / M_PI), 1.0, 0.01);
 }
@@ -202,9 +205,12 @@ TEST(HardCases, BadLightsAndSettingsAreRefused) {
   ReferenceSettings bad;
   bad.illumination.texel_per_z_r = 0.0;
   EXPECT_THROW(render_reference(sphere, m, kTopLight, bad), std::invalid_argument);
-  GridSettings bad_grid;
-  bad_grid.near_field_cells = nan;
-  EXPECT_THROW(render_grid(sphere, m, kTopLight, bad_grid), std::invalid_argument);
+  ReferenceSettings no_rings;
+  no_rings.near.quadrature.rings = 0;
+  EXPECT_THROW(render_reference(sphere, m, kTopLight, no_rings), std::invalid_argument);
+  ReferenceSettings outside;
+  outside.receivers = {sphere.size()};
+  EXPECT_THROW(render_reference(sphere, m, kTopLight, outside), std::invalid_argument);
   // No light is not an error: everything is black.
   for (const Rgb& v : render_reference(sphere, m, {}).B) EXPECT_EQ(v[0], 0.0);
 }

@@ -12,15 +12,15 @@ TEST(SourceTree, ExpansionAgreesWithDirectSum) {
   const SurfelCloud sphere = make_sphere(10.0, 0.5);  // mm
   const Material material = Material::preset("skimmilk");  // a long kernel: most is far field
   const std::vector<DirectionalLight> light{{Eigen::Vector3d(1, 1, 2), 1.0}};
-  SourceTreeSettings direct;
-  direct.theta = 0.0;
-  const ReferenceSolver exact(sphere, material, light, IlluminationSettings{}, direct);
-  const ReferenceSolver fast(sphere, material, light, IlluminationSettings{}, SourceTreeSettings{});
+  ReferenceSettings direct;
+  direct.tree.theta = 0.0;
+  const ReferenceSolver exact(sphere, material, light, direct);
+  const ReferenceSolver fast(sphere, material, light);
   double worst = 0.0, sum = 0.0;
   int count = 0;
   for (std::size_t i = 0; i < sphere.size(); i += 97) {
-    const Rgb a = exact.B_at(sphere.positions[i]);
-    const Rgb b = fast.B_at(sphere.positions[i]);
+    const Rgb a = exact.sources_B_at(sphere.positions[i], KernelWindow::all());
+    const Rgb b = fast.sources_B_at(sphere.positions[i], KernelWindow::all());
     for (int c = 0; c < 3; ++c) {
       const double e = std::fabs(b[c] / a[c] - 1);
       worst = std::max(worst, e);
@@ -38,12 +38,11 @@ TEST(SourceTree, ExpansionAgreesWithDirectSum) {
 TEST(SourceTree, NearAndFarPartsAddUpToTheWhole) {
   const SurfelCloud torus = make_torus(20.0, 6.0, 0.5);
   const Material material = Material::preset("marble");
-  const ReferenceSolver solver(torus, material, {{Eigen::Vector3d(0, 1, 1), 1.0}},
-                               IlluminationSettings{}, SourceTreeSettings{});
+  const ReferenceSolver solver(torus, material, {{Eigen::Vector3d(0, 1, 1), 1.0}});
   for (std::size_t i = 0; i < torus.size(); i += 211) {
-    const Rgb all = solver.B_at(torus.positions[i]);
-    const Rgb near = solver.B_at(torus.positions[i], KernelWindow::near(2.0, 4.0));
-    const Rgb far = solver.B_at(torus.positions[i], KernelWindow::far(2.0, 4.0));
+    const Rgb all = solver.sources_B_at(torus.positions[i], KernelWindow::all());
+    const Rgb near = solver.sources_B_at(torus.positions[i], KernelWindow::near(2.0, 4.0));
+    const Rgb far = solver.sources_B_at(torus.positions[i], KernelWindow::far(2.0, 4.0));
     // Each side is summed with the tree's own accuracy (see the test above).
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(near[c] + far[c], all[c], 3e-3 * all[c]);
   }

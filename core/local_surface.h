@@ -1,0 +1,55 @@
+// The smooth local surface that the near field integrates over and that lifts the light's
+// samples off the flat discs: around a surfel at p with unit normal n and mean curvature kappa
+// (1 / radius, > 0 where the surface bends away from n), the osculating paraboloid
+//   x(d) = p + d - kappa |d|^2 / 2 n,   n(d) = normalize(n + kappa d),
+// for an offset d in the tangent plane. Flat discs overlap above a curved surface by up to
+// kappa r^2 / 2 and scanner noise stacks them further; taking the near field on this surface
+// instead makes it independent of how the surface was sampled. shaders/local_surface.glsl is
+// the same on the GPU.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace sss {
+
+struct SurfacePoint {
+  Eigen::Vector3d position;
+  Eigen::Vector3d normal;
+};
+
+inline SurfacePoint on_local_surface(const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                                     double kappa, const Eigen::Vector3d& d) {
+  return {p + d - 0.5 * kappa * d.squaredNorm() * n, (n + kappa * d).normalized()};
+}
+
+// A tangent frame of n, the same on the CPU and the GPU (shaders/local_surface.glsl).
+inline void tangent_frame(const Eigen::Vector3d& n, Eigen::Vector3d& t1, Eigen::Vector3d& t2) {
+  const Eigen::Vector3d helper =
+      std::fabs(n.x()) < 0.7 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  t1 = n.cross(helper).normalized();
+  t2 = n.cross(t1);
+}
+
+// How far along the light, from a node y towards the light, the local surface of the disc the
+// light sees at y's texel lies: that disc's point and normal at the texel centre (on its local
+// surface) give a plane, met at this distance by the ray from y towards the light. Measured
+// against the plane rather than the texel's own depth, it carries no error from where in the
+// texel y falls.
+inline double distance_to_seen_surface(const Eigen::Vector3d& y, const Eigen::Vector3d& towards,
+                                       const Eigen::Vector3d& seen_point,
+                                       const Eigen::Vector3d& seen_normal) {
+  return (seen_point - y).dot(seen_normal) / std::max(std::fabs(seen_normal.dot(towards)), 0.05);
+}
+
+// A node belongs to the surface the light sees when that surface is within this distance of
+// it along the light: an occluder must stand more than `occluder_height` (mm, along the
+// normal) off the local surface to shadow the node; cos_theta is the node's cosine to the
+// light (a height along the normal is height / cos_theta along the light).
+inline double visibility_tolerance(double occluder_height, double cos_theta) {
+  return occluder_height / std::max(cos_theta, 0.1);
+}
+
+}  // namespace sss

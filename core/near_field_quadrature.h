@@ -1,0 +1,54 @@
+// Quadrature of the near part of eq. 17 on the receiver's local surface: rings around the
+// receiver, each holding an equal share of the kernel's near-part integral (mixed over the
+// three channels), with nodes spread evenly in angle. A node's weight per channel is the exact
+// integral of (1 - w(rho)) Rd(rho) 2 pi rho d rho over its ring, over the ring's node count, so
+// the weights of a uniformly lit plane sum to the near part's closed form whatever the number
+// of nodes or the surfel spacing.
+#pragma once
+
+#include <vector>
+
+#include "dipole.h"
+#include "kernel_window.h"
+#include "material.h"
+
+namespace sss {
+
+struct NearFieldRing {
+  double radius = 0.0;  // mm from the receiver, in its tangent plane (0: the centre node)
+  int nodes = 1;        // spread evenly in angle
+  Rgb node_weight{};    // per node and channel: its share of the near integral (dimensionless)
+};
+
+struct QuadratureSettings {
+  int rings = 8;        // including the centre node's disc
+  int min_nodes = 4;    // per ring, outside the centre
+  int max_nodes = 12;
+};
+
+class NearFieldQuadrature {
+ public:
+  NearFieldQuadrature() = default;
+  // The near part of the kernel as `window` (Near, or All up to `reach`) keeps it. Throws
+  // std::invalid_argument for fewer than 1 ring, a node count below 1, or a reach that is not
+  // finite and positive.
+  NearFieldQuadrature(const Dipole& dipole, const KernelWindow& window, double reach,
+                      const QuadratureSettings& settings);
+
+  const std::vector<NearFieldRing>& rings() const { return rings_; }
+  double reach() const { return reach_; }
+  int node_count() const;
+  // Sum of every node's weight: Integral_0^reach (1 - w) Rd 2 pi rho d rho per channel.
+  Rgb total_weight() const;
+
+  // Integral_0^rho of the kept part of Rd 2 pi r dr for one channel (closed form inside r0,
+  // Gauss-Legendre over the window's rise).
+  static double kept_integral(const DipoleChannel& channel, const KernelWindow& window,
+                              double rho);
+
+ private:
+  std::vector<NearFieldRing> rings_;
+  double reach_ = 0.0;
+};
+
+}  // namespace sss
