@@ -44,12 +44,19 @@ inline double distance_to_seen_surface(const Eigen::Vector3d& y, const Eigen::Ve
   return (seen_point - y).dot(seen_normal) / std::max(std::fabs(seen_normal.dot(towards)), 0.05);
 }
 
+// How far off a surfel's local surface (mm, along the normal) the discs the light sees there
+// may stand and still be that surface: three times its roughness (scanner noise), the height
+// kappa r^2 by which flat discs of radius r stack above a curved surface, and a twentieth of a
+// disc radius. An occluder must stand farther off to shadow the surface.
+inline double surface_thickness(double roughness, double kappa, double disc_radius) {
+  return 3.0 * roughness + std::fabs(kappa) * disc_radius * disc_radius + 0.05 * disc_radius;
+}
+
 // A node belongs to the surface the light sees when that surface is within this distance of
-// it along the light: an occluder must stand more than `occluder_height` (mm, along the
-// normal) off the local surface to shadow the node; cos_theta is the node's cosine to the
+// it along the light: `thickness` is along the normal, cos_theta the node's cosine to the
 // light (a height along the normal is height / cos_theta along the light).
-inline double visibility_tolerance(double occluder_height, double cos_theta) {
-  return occluder_height / std::max(cos_theta, 0.1);
+inline double visibility_tolerance(double thickness, double cos_theta) {
+  return thickness / std::max(cos_theta, 0.1);
 }
 
 }  // namespace sss

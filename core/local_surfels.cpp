@@ -1,11 +1,13 @@
 #include "local_surfels.h"
 
-#include "surface_curvature.h"
+#include "surface_fit.h"
+
+#include <utility>
 
 namespace sss {
 
 LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
-                                bool with_curvature) {
+                                bool with_surface_fit) {
   LocalSurfels local;
   local.frame.origin = cloud.empty() ? Eigen::Vector3d::Zero() : cloud.bounds().center();
   local.frame.mm_per_unit = mm_per_unit;
@@ -17,7 +19,11 @@ LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
   local.normals = cloud.normals;
   local.albedo = cloud.albedo;
   local.radius = cloud.radius * mm_per_unit;
-  if (with_curvature) local.curvature = mean_curvature(local.positions, local.normals);
+  if (with_surface_fit) {
+    SurfaceFit fit = fit_local_surfaces(local.positions, local.normals);
+    local.curvature = std::move(fit.curvature);
+    local.roughness = std::move(fit.roughness);
+  }
   return local;
 }
 

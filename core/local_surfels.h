@@ -13,14 +13,15 @@ struct LocalSurfels {
   std::vector<Eigen::Vector3d> positions;  // mm, relative to frame.origin
   std::vector<Eigen::Vector3d> normals;    // unit
   std::vector<Rgb> albedo;                 // empty or one per surfel
-  std::vector<double> curvature;           // 1/mm (surface_curvature.h); empty: flat discs
+  std::vector<double> curvature;           // 1/mm (surface_fit.h); empty: flat discs
+  std::vector<double> roughness;           // mm (surface_fit.h); empty with the curvature
   double radius = 0.0;                     // mm
   Bounds bounds;                           // of positions, mm
 
-  // The cloud must have been validated (SurfelCloud::validate). The curvature costs a
+  // The cloud must have been validated (SurfelCloud::validate). The local surface fit costs a
   // nearest-neighbour search; views that only show given radiance can do without it.
   static LocalSurfels from(const SurfelCloud& cloud, double mm_per_unit,
-                           bool with_curvature = true);
+                           bool with_surface_fit = true);
   std::size_t size() const { return positions.size(); }
 };
 

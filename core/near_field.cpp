@@ -29,9 +29,15 @@ NearField::NearField(const LocalSurfels& surfels, const Material& material,
     : surfels_(surfels),
       light_(light),
       material_(material),
-      quadrature_(Dipole(material), window, reach, settings.quadrature),
-      occluder_height_(settings.occluder_height_in_radii * surfels.radius),
-      kappa_limit_(1.0 / quadrature_.reach()) {}
+      dipole_(material),
+      quadrature_(dipole_, window, reach, settings.quadrature),
+      kappa_limit_(1.0 / quadrature_.reach()) {
+  for (const NearFieldRing& ring : quadrature_.rings()) {
+    Rgb planar;
+    for (int c = 0; c < 3; ++c) planar[c] = dipole_.channel[c].Rd(ring.radius);
+    ring_planar_Rd_.push_back(planar);
+  }
+}
 
 Rgb NearField::B(std::size_t receiver) const {
   Rgb sum{0.0, 0.0, 0.0};
@@ -39,6 +45,8 @@ Rgb NearField::B(std::size_t receiver) const {
   const bool curved = surfels_.curvature.size() == surfels_.size();
   const double kappa_given = curved ? surfels_.curvature[receiver] : 0.0;
   const double kappa_surface = std::clamp(kappa_given, -kappa_limit_, kappa_limit_);
+  const double roughness = curved ? surfels_.roughness[receiver] : 0.0;
+  const double thickness = surface_thickness(roughness, kappa_given, surfels_.radius);
   const double rotation = rotation_of(receiver);
   const Rgb albedo_one{1.0, 1.0, 1.0};
   for (std::size_t li = 0; li < light_.maps.size(); ++li) {
@@ -72,11 +80,18 @@ Rgb NearField::B(std::size_t receiver) const {
         const SurfacePoint hit =
             seen_point(surfels_, map, hits, static_cast<int>(u), static_cast<int>(v));
         const double along = distance_to_seen_surface(y.position, l, hit.position, hit.normal);
-        if (std::fabs(along) > visibility_tolerance(occluder_height_, cos_i)) continue;
+        if (std::fabs(along) > visibility_tolerance(thickness, cos_i)) continue;
         const Rgb& albedo = surfels_.albedo.empty() ? albedo_one : surfels_.albedo[seen];
-        for (int c = 0; c < 3; ++c)
-          sum[c] += ring.node_weight[c] * irradiance *
+        for (int c = 0; c < 3; ++c) {
+          // The ring's planar weight, bent with the surface: eq. 3 from the node's point and
+          // normal over eq. 3 at the same distance on a plane (1 on a plane).
+          const DipoleChannel& ch = dipole_.channel[c];
+          const double bent = ch.Rd_from_distances((y.position - ch.z_r * y.normal - p).norm(),
+                                                   (y.position + ch.z_v * y.normal - p).norm()) /
+                              ring_planar_Rd_[k][c];
+          sum[c] += ring.node_weight[c] * bent * irradiance *
                     fresnel_transmittance(material_.eta[c], cos_i) * cos_i * albedo[c];
+        }
       }
     }
   }

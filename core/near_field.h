@@ -1,8 +1,11 @@
 // The near field of eq. 17 at a receiver, integrated on its local surface (local_surface.h):
-//   B_near(x_o) = 1/pi Sum_q W_q E(y_q),   E(y) = E_light Ft(eta, theta) cos(theta) albedo V(y)
+//   B_near(x_o) = 1/pi Sum_q W_q C_q E(y_q),   E(y) = E_light Ft(eta, theta) cos(theta) albedo V(y)
 // over the nodes y_q of a NearFieldQuadrature laid out on the receiver's osculating paraboloid,
-// each node's cosine from the paraboloid's normal there. V(y) = 1 where the light's map sees,
-// at y's texel, a point within visibility_tolerance of y along the light: the same surface.
+// each node's cosine from the paraboloid's normal there; C_q = Rd(y_q, n_q -> x_o) / Rd(rho_q)
+// bends the ring's planar weight with the surface (eq. 3 from the node's point and normal, as
+// the far field evaluates its sources), so the split radius does not change B. V(y) = 1 where the local surface of
+// the disc the light's map sees at y's texel passes within visibility_tolerance of y along
+// the light (the receiver's surface_thickness): the same surface.
 // A point seen in front of it shadows the node; nothing there, or only something behind it,
 // means the surface ends (an open edge, a hole): no light enters. The albedo is that of the
 // disc the light sees. This is the CPU form of shaders/near_field.glsl.
@@ -20,9 +23,6 @@ namespace sss {
 
 struct NearFieldSettings {
   QuadratureSettings quadrature;
-  // An occluder must stand this many disc radii off the local surface to shadow it: flat discs
-  // stack above a curved surface by up to kappa r^2 / 2, and scanner noise stacks them more.
-  double occluder_height_in_radii = 1.0;
 };
 
 class NearField {
@@ -42,8 +42,9 @@ class NearField {
   const LocalSurfels& surfels_;
   const IlluminationSamples& light_;
   Material material_;
+  Dipole dipole_;
   NearFieldQuadrature quadrature_;
-  double occluder_height_ = 0.0;
+  std::vector<Rgb> ring_planar_Rd_;  // Rd at each ring's radius on a plane
   double kappa_limit_ = 0.0;
 };
 

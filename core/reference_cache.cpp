@@ -175,7 +175,7 @@ ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material
   h.add_word(signed_word(settings.near.quadrature.rings));
   h.add_word(signed_word(settings.near.quadrature.min_nodes));
   h.add_word(signed_word(settings.near.quadrature.max_nodes));
-  h.add(settings.near.occluder_height_in_radii);
+  h.add(settings.r0_mm);
   h.add_word(settings.receivers.size());
   for (std::size_t i : settings.receivers) h.add_word(i);
 

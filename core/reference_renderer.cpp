@@ -29,8 +29,9 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
   samples_ = illuminate(surfels_, material, lights, settings.illumination);
   stats_.seconds_illumination = clock.lap();
   const double texel = samples_.maps.empty() ? 0.0 : samples_.maps[0].pixel;
-  split_ = NearFarSplit::choose(dipole_, NearFarSplit::minimum_r0(surfels_.radius, texel),
-                                settings.tree.kernel_tolerance);
+  const double r0 = settings.r0_mm > 0.0 ? settings.r0_mm
+                                         : NearFarSplit::minimum_r0(surfels_.radius, texel);
+  split_ = NearFarSplit::choose(dipole_, r0, settings.tree.kernel_tolerance);
   near_ = std::make_unique<NearField>(surfels_, material, samples_, split_.near, split_.reach,
                                       settings.near);
   stats_.record_sources(samples_, surfels_.size());

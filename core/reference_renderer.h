@@ -33,6 +33,8 @@ struct ReferenceSettings {
   IlluminationSettings illumination;
   SourceTreeSettings tree;
   NearFieldSettings near = reference_near_field();
+  // The near field's r0 in mm; 0 takes NearFarSplit::minimum_r0 of the cloud and map.
+  double r0_mm = 0.0;
   // Empty: B at every surfel. Otherwise only at these surfels (indices into the validated
   // cloud); the others are NaN. Large scans are compared on a sample of their points.
   std::vector<std::size_t> receivers;
