@@ -31,13 +31,7 @@ NearField::NearField(const LocalSurfels& surfels, const Material& material,
       material_(material),
       dipole_(material),
       quadrature_(dipole_, window, reach, settings.quadrature),
-      kappa_limit_(1.0 / quadrature_.reach()) {
-  for (const NearFieldRing& ring : quadrature_.rings()) {
-    Rgb planar;
-    for (int c = 0; c < 3; ++c) planar[c] = dipole_.channel[c].Rd(ring.radius);
-    ring_planar_Rd_.push_back(planar);
-  }
-}
+      kappa_limit_(1.0 / quadrature_.reach()) {}
 
 Rgb NearField::B(std::size_t receiver) const {
   Rgb sum{0.0, 0.0, 0.0};
@@ -64,6 +58,7 @@ Rgb NearField::B(std::size_t receiver) const {
     const auto& rings = quadrature_.rings();
     for (std::size_t k = 0; k < rings.size(); ++k) {
       const NearFieldRing& ring = rings[k];
+      const Rgb bent = NearFieldQuadrature::bend(dipole_, ring.radius, kappa);
       const double offset = rotation + kGoldenFraction * static_cast<double>(k);
       for (int a = 0; a < ring.nodes; ++a) {
         const double angle = 2.0 * kPi * (a + offset) / ring.nodes;
@@ -82,16 +77,9 @@ Rgb NearField::B(std::size_t receiver) const {
         const double along = distance_to_seen_surface(y.position, l, hit.position, hit.normal);
         if (std::fabs(along) > visibility_tolerance(thickness, cos_i)) continue;
         const Rgb& albedo = surfels_.albedo.empty() ? albedo_one : surfels_.albedo[seen];
-        for (int c = 0; c < 3; ++c) {
-          // The ring's planar weight, bent with the surface: eq. 3 from the node's point and
-          // normal over eq. 3 at the same distance on a plane (1 on a plane).
-          const DipoleChannel& ch = dipole_.channel[c];
-          const double bent = ch.Rd_from_distances((y.position - ch.z_r * y.normal - p).norm(),
-                                                   (y.position + ch.z_v * y.normal - p).norm()) /
-                              ring_planar_Rd_[k][c];
-          sum[c] += ring.node_weight[c] * bent * irradiance *
+        for (int c = 0; c < 3; ++c)
+          sum[c] += ring.node_weight[c] * bent[c] * irradiance *
                     fresnel_transmittance(material_.eta[c], cos_i) * cos_i * albedo[c];
-        }
       }
     }
   }

@@ -44,7 +44,6 @@ class NearField {
   Material material_;
   Dipole dipole_;
   NearFieldQuadrature quadrature_;
-  std::vector<Rgb> ring_planar_Rd_;  // Rd at each ring's radius on a plane
   double kappa_limit_ = 0.0;
 };
 

@@ -1,5 +1,7 @@
 #include "near_field_quadrature.h"
 
+#include "local_surface.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -100,6 +102,22 @@ NearFieldQuadrature::NearFieldQuadrature(const Dipole& dipole, const KernelWindo
     }
     rings_.push_back(ring);
   }
+}
+
+Rgb NearFieldQuadrature::bend(const Dipole& dipole, double rho, double kappa) {
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+  const SurfacePoint y = on_local_surface(Eigen::Vector3d::Zero(), n, kappa,
+                                          Eigen::Vector3d(rho, 0.0, 0.0));
+  Rgb ratio;
+  for (int c = 0; c < 3; ++c) {
+    const DipoleChannel& ch = dipole.channel[c];
+    const double planar = ch.Rd(rho);
+    ratio[c] = planar > 0.0 ? ch.Rd_from_distances((y.position - ch.z_r * y.normal).norm(),
+                                                   (y.position + ch.z_v * y.normal).norm()) /
+                                  planar
+                            : 1.0;
+  }
+  return ratio;
 }
 
 int NearFieldQuadrature::node_count() const {

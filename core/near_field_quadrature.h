@@ -41,6 +41,11 @@ class NearFieldQuadrature {
   // Sum of every node's weight: Integral_0^reach (1 - w) Rd 2 pi rho d rho per channel.
   Rgb total_weight() const;
 
+  // How much a node at distance rho on a surface of mean curvature kappa (the osculating
+  // paraboloid of local_surface.h) weighs against the same node on a plane: eq. 3 from the
+  // node's point and normal over eq. 3 at rho on a plane, per channel (1 at kappa = 0).
+  static Rgb bend(const Dipole& dipole, double rho, double kappa);
+
   // Integral_0^rho of the kept part of Rd 2 pi r dr for one channel (closed form inside r0,
   // Gauss-Legendre over the window's rise).
   static double kept_integral(const DipoleChannel& channel, const KernelWindow& window,

@@ -8,6 +8,9 @@
 #include "sss_gather_tree.h"
 #include "sss_illumination_fs.h"
 #include "sss_kernel_window.h"
+#include "sss_light_maps.h"
+#include "sss_near_field.h"
+#include "sss_near_field_fs.h"
 #include "sss_pyramid_reduce_fs.h"
 #include "sss_surfel_gs.h"
 #include "sss_surfel_resolve_fs.h"
@@ -17,7 +20,11 @@
 #include "sss_virtual_points_vs.h"
 
 #include "disc_raster.h"
+#include "fresnel.h"
+#include "local_surface.h"
 #include "local_surfels.h"
+#include "near_far_split.h"
+#include "near_field_quadrature.h"
 #include "stopwatch.h"
 #include "virtual_grid.h"
 
@@ -54,6 +61,7 @@ constexpr std::size_t kVirtualPointBudget = 16384;
 // The paper's grid: 64 points per axis (13-19 k kept on its scans), its automatic level.
 constexpr int kPaperGridLevel = 6;
 constexpr int kListWidth = 256;  // a squarish list keeps the rasteriser's tiles (threads) busy
+constexpr int kFresnelTableSize = 256;
 
 struct LevelRect
 {
@@ -66,6 +74,7 @@ std::string WithPieces(std::string source, const std::string& gather)
   vtkShaderProgram::Substitute(source, "//SSS::Dipole::Dec", sss_dipole, true);
   vtkShaderProgram::Substitute(source, "SSS_MAX_LIGHTS", std::to_string(kMaxLights), true);
   vtkShaderProgram::Substitute(source, "SSS_MAX_LEVELS", std::to_string(kMaxLevels), true);
+  vtkShaderProgram::Substitute(source, "SSS_MAX_RINGS", std::to_string(kMaxRings), true);
   return source;
 }
 
@@ -145,12 +154,16 @@ std::uint32_t MortonCode(const Eigen::Vector3d& p, const Eigen::Vector3d& lo, do
 // so neighbouring receivers side by side walk nearly the same tree in the same time.
 struct ReceiverList
 {
-  vtkSmartPointer<vtkTextureObject> points;  // xyz: local mm, w: 1 where a receiver
+  vtkSmartPointer<vtkTextureObject> points;  // xyz: local mm, w: > 0 where a receiver
+  vtkSmartPointer<vtkTextureObject> shape;   // optional: per receiver, same layout
   vtkSmartPointer<vtkTextureObject> B;       // the walk's result, same layout
   vtkNew<vtkOpenGLBufferObject> texel;       // per receiver, in input order: its texel
   int width = 0, height = 0;
 
-  void upload(vtkOpenGLRenderWindow* window, const std::vector<Eigen::Vector3d>& positions)
+  // `w` (one per receiver, > 0; empty: 1) goes into the points' w, `shapes` (empty: none) into
+  // a second texture of the same layout.
+  void upload(vtkOpenGLRenderWindow* window, const std::vector<Eigen::Vector3d>& positions,
+    const std::vector<float>& w = {}, const std::vector<Eigen::Vector4f>& shapes = {})
   {
     const std::size_t n = positions.size();
     Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();
@@ -178,6 +191,7 @@ struct ReceiverList
     width = kListWidth;
     height = 4 * static_cast<int>(std::max<std::size_t>(1, (blocks + blocks_per_row - 1) / blocks_per_row));
     std::vector<float> texels(4 * static_cast<std::size_t>(width) * height, 0.0f);
+    std::vector<float> shape_texels(shapes.empty() ? 0 : texels.size(), 0.0f);
     std::vector<float> at(2 * n);
     for (std::size_t rank = 0; rank < n; ++rank)
     {
@@ -191,12 +205,23 @@ struct ReceiverList
       {
         t[c] = static_cast<float>(positions[i][c]);
       }
-      t[3] = 1.0f;
+      t[3] = w.empty() ? 1.0f : w[i];
+      if (!shapes.empty())
+      {
+        std::copy(shapes[i].data(), shapes[i].data() + 4,
+          &shape_texels[4 * (static_cast<std::size_t>(y) * width + x)]);
+      }
       at[2 * i] = static_cast<float>(x);
       at[2 * i + 1] = static_cast<float>(y);
     }
     points = float_texture_2d(window, width, height);
     points->Create2DFromRaw(width, height, 4, VTK_FLOAT, texels.data());
+    shape = nullptr;
+    if (!shapes.empty())
+    {
+      shape = float_texture_2d(window, width, height);
+      shape->Create2DFromRaw(width, height, 4, VTK_FLOAT, shape_texels.data());
+    }
     B = float_texture_2d(window, width, height);
     texel->Upload(at, vtkOpenGLBufferObject::ArrayBuffer);
   }
@@ -204,7 +229,7 @@ struct ReceiverList
   void release(vtkWindow* window)
   {
     texel->ReleaseGraphicsResources();
-    for (auto* t : { &points, &B })
+    for (auto* t : { &points, &shape, &B })
     {
       if (*t)
       {
@@ -221,8 +246,16 @@ struct TranslucentActorState::Gpu
   std::unique_ptr<Dipole> dipole;
   double support_radius = 0;
 
-  vtkNew<vtkOpenGLBufferObject> points, normals, colours;
+  vtkNew<vtkOpenGLBufferObject> points, normals, colours, curvatures;
   ProgramVAO illumination_vao, resolve_vao, grid_vao;
+
+  // The near field (NearFar): where it hands over to the far field, its quadrature, the
+  // exact Fresnel transmittance as a table, and the far field at each surfel.
+  NearFarSplit split;
+  std::unique_ptr<NearFieldQuadrature> quadrature;
+  vtkSmartPointer<vtkTextureObject> fresnel_table, surfel_far;
+  std::unique_ptr<vtkOpenGLQuadHelper> near_quad;
+  std::vector<Eigen::Vector3d> light_directions;
 
   std::vector<OrthoView> maps;
   std::vector<std::vector<LevelRect>> levels;
@@ -276,6 +309,7 @@ struct TranslucentActorState::Gpu
     points->ReleaseGraphicsResources();
     normals->ReleaseGraphicsResources();
     colours->ReleaseGraphicsResources();
+    curvatures->ReleaseGraphicsResources();
     grid_index->ReleaseGraphicsResources();
     for (ProgramVAO* v : { &illumination_vao, &resolve_vao, &grid_vao })
     {
@@ -284,7 +318,7 @@ struct TranslucentActorState::Gpu
     }
     for (auto* t : { &atlas_point, &atlas_power, &atlas_normal, &atlas_cov0, &atlas_cov1,
            &atlas_depth, &grid_radiance,
-           &list })
+           &list, &fresnel_table, &surfel_far })
     {
       if (*t)
       {
@@ -294,10 +328,13 @@ struct TranslucentActorState::Gpu
     }
     surfel_receivers.release(window);
     grid_receivers.release(window);
-    if (gather_quad)
+    for (auto* quad : { &gather_quad, &near_quad })
     {
-      gather_quad->ReleaseGraphicsResources(window);
-      gather_quad.reset();
+      if (*quad)
+      {
+        (*quad)->ReleaseGraphicsResources(window);
+        quad->reset();
+      }
     }
     gather_fbo->ReleaseGraphicsResources(window);
     map_fbo->ReleaseGraphicsResources(window);
@@ -395,6 +432,12 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   Finish(finish);
   report.surfels = true;
   report.seconds_surfels = clock.lap();
+  if (gpu_->quadrature)
+  {
+    report.near_reach_mm = gpu_->split.reach;
+    report.far_from_mm = gpu_->split.has_far ? gpu_->split.far.r0 : 0.0;
+    report.near_nodes = gpu_->quadrature->node_count();
+  }
   lights_ = lights;
   settings_ = settings;
   albedo_from_colour_ = albedo_from_colour;
@@ -419,20 +462,90 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
       normals[3 * i + c] = static_cast<float>(g.local.normals[i][c]);
     }
   }
+  // Each disc's curvature lifts the light's texels onto its local surface (clamped at one
+  // over the disc radius, as core/illumination.cpp does).
+  std::vector<float> curvatures(n);
+  const double lift_limit = 1.0 / g.local.radius;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    curvatures[i] = static_cast<float>(std::clamp(g.local.curvature[i], -lift_limit, lift_limit));
+  }
   g.points->Upload(points, vtkOpenGLBufferObject::ArrayBuffer);
   g.normals->Upload(normals, vtkOpenGLBufferObject::ArrayBuffer);
   g.colours->Upload(surfels.rgba, vtkOpenGLBufferObject::ArrayBuffer);
+  g.curvatures->Upload(curvatures, vtkOpenGLBufferObject::ArrayBuffer);
   g.illumination_vao.program = nullptr;
   g.resolve_vao.program = nullptr;
 
   list_width_ = kListWidth;
   g.list_height = static_cast<int>((n + kListWidth - 1) / kListWidth);
   g.list = float_texture_2d(window, list_width_, std::max(1, g.list_height));
-  g.surfel_receivers.upload(window, g.local.positions);
+  g.quadrature.reset();
+  g.surfel_far = nullptr;
+  g.fresnel_table = nullptr;
+  if (settings.strategy == KernelStrategy::NearFar)
+  {
+    // The largest texel any light's map can have (its diagonal over the map size) sets how
+    // close the far field's point sources may come.
+    const double extent = g.local.bounds.extent().norm() + 2.0 * g.local.radius;
+    const double texel =
+      std::max(settings.texel_per_z_r * g.dipole->min_z_r(), extent / settings.max_map_size);
+    g.split = NearFarSplit::choose(
+      *g.dipole, NearFarSplit::minimum_r0(g.local.radius, texel), kSupportFraction);
+    QuadratureSettings quadrature;
+    quadrature.rings = settings.near_rings;
+    quadrature.min_nodes = std::min(4, settings.near_nodes);
+    quadrature.max_nodes = settings.near_nodes;
+    try
+    {
+      g.quadrature =
+        std::make_unique<NearFieldQuadrature>(*g.dipole, g.split.near, g.split.reach, quadrature);
+    }
+    catch (const std::exception& e)
+    {
+      error = e.what();
+      return false;
+    }
+    if (static_cast<int>(g.quadrature->rings().size()) > kMaxRings)
+    {
+      error = "at most " + std::to_string(kMaxRings) + " near-field rings are supported";
+      return false;
+    }
+    std::vector<float> thickness(n);
+    std::vector<Eigen::Vector4f> shapes(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      thickness[i] = static_cast<float>(
+        surface_thickness(g.local.roughness[i], g.local.curvature[i], g.local.radius));
+      shapes[i] << g.local.normals[i].cast<float>(), static_cast<float>(g.local.curvature[i]);
+    }
+    g.surfel_receivers.upload(window, g.local.positions, thickness, shapes);
+    if (g.split.has_far)
+    {
+      g.surfel_far = float_texture_2d(window, g.surfel_receivers.width, g.surfel_receivers.height);
+    }
+    std::vector<float> table(4 * kFresnelTableSize, 1.0f);
+    for (int k = 0; k < kFresnelTableSize; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        table[4 * k + c] = static_cast<float>(
+          fresnel_transmittance(material_.eta[c], double(k) / (kFresnelTableSize - 1)));
+      }
+    }
+    g.fresnel_table = float_texture_2d(window, kFresnelTableSize, 1);
+    g.fresnel_table->SetMinificationFilter(vtkTextureObject::Linear);
+    g.fresnel_table->SetMagnificationFilter(vtkTextureObject::Linear);
+    g.fresnel_table->Create2DFromRaw(kFresnelTableSize, 1, 4, VTK_FLOAT, table.data());
+  }
+  else
+  {
+    g.surfel_receivers.upload(window, g.local.positions);
+  }
 
   g.grid.reset();
   g.grid_radiance = nullptr;
-  if (settings.strategy != KernelStrategy::Surfel)
+  if (settings.strategy != KernelStrategy::Surfel && settings.strategy != KernelStrategy::NearFar)
   {
     VirtualGridSettings grid_settings;
     grid_settings.level = settings.grid_level == 0 && settings.strategy == KernelStrategy::Paper
@@ -508,7 +621,7 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
 
 std::string TranslucentActorState::gather_source(const GpuSettings& settings) const
 {
-  return std::string(sss_kernel_window) + "\n" + sss_dipole + "\n" +
+  return std::string(sss_light_maps) + "\n" + sss_kernel_window + "\n" + sss_dipole + "\n" +
     (settings.strategy == KernelStrategy::Paper ? sss_gather_paper : sss_gather_tree);
 }
 
@@ -561,6 +674,15 @@ void TranslucentActorState::set_gather_uniforms(vtkShaderProgram* program,
     corner[2 * l] = static_cast<float>(map.corner.x());
     corner[2 * l + 1] = static_cast<float>(map.corner.y());
   }
+  std::vector<float> directions(3 * kMaxLights, 0.0f);
+  for (std::size_t l = 0; l < g.light_directions.size() && l < std::size_t(kMaxLights); ++l)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      directions[3 * l + c] = static_cast<float>(g.light_directions[l][c]);
+    }
+  }
+  program->SetUniform3fv("lightDirection", kMaxLights, directions.data());
   program->SetUniformi("lightCount", lights);
   program->SetUniform1iv("levelCount", kMaxLights, level_count.data());
   program->SetUniform4fv("levelRect", kMaxLights * kMaxLevels, rects.data());
@@ -598,6 +720,11 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   const int max_size = paper ? kPaperMapSize : settings.max_map_size;
   g.maps.clear();
   g.levels.clear();
+  g.light_directions.clear();
+  for (const GpuLight& light : lights)
+  {
+    g.light_directions.push_back(light.towards_light);
+  }
   int atlas_w = 1, atlas_h = 0;
   for (const GpuLight& light : lights)
   {
@@ -684,7 +811,9 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-  const std::string vs = WithoutRadianceHooks(sss_surfel_vs);
+  std::string vs = WithoutRadianceHooks(sss_surfel_vs);
+  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Dec", "in float curvatureMC;", true);
+  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Impl", "curvature_gs = curvatureMC;", true);
   const std::string fs = WithPieces(sss_illumination_fs, "");
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), sss_surfel_gs);
@@ -703,6 +832,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     pv.vao->AddAttributeArray(program, g.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
     pv.vao->AddAttributeArray(program, g.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
     pv.vao->AddAttributeArray(program, g.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+    pv.vao->AddAttributeArray(program, g.curvatures, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
     pv.program = program;
   }
   set_gather_uniforms(program, settings, 0, 0, 0);
@@ -867,10 +997,22 @@ bool TranslucentActorState::run_surfels(
 {
   Gpu& g = *gpu_;
   const bool use_grid = static_cast<bool>(g.grid);
+  const bool near_far = settings.strategy == KernelStrategy::NearFar;
   const bool near_only = settings.strategy == KernelStrategy::GridNear;
   const bool gather_here = !use_grid || near_only;
+  const bool add_far = near_far && g.split.has_far;
   const double r0 = use_grid ? settings.near_field_cells * g.grid->spacing() : 0.0;
-  if (gather_here &&
+  if (near_far)
+  {
+    if (!run_near_field(window, settings, error) ||
+      (add_far &&
+        !gather_at_receivers(window, settings, g.surfel_receivers, 2, g.split.far.r0,
+          g.split.far.r1, error, g.surfel_far)))
+    {
+      return false;
+    }
+  }
+  else if (gather_here &&
     !gather_at_receivers(window, settings, g.surfel_receivers, near_only ? 1 : 0, r0, 2.0 * r0, error))
   {
     return false;
@@ -890,6 +1032,14 @@ bool TranslucentActorState::run_surfels(
   g.surfel_receivers.B->Activate();
   program->SetUniformi("gathered", g.surfel_receivers.B->GetTextureUnit());
   program->SetUniformi("gatherAtSurfel", gather_here ? 1 : 0);
+  // The far field at each surfel (NearFar), or a unit the sampler may use unread.
+  vtkTextureObject* far = add_far ? g.surfel_far.Get() : g.surfel_receivers.B.Get();
+  if (add_far)
+  {
+    far->Activate();
+  }
+  program->SetUniformi("gatheredFar", far->GetTextureUnit());
+  program->SetUniformi("addFar", add_far ? 1 : 0);
   program->SetUniformi("useGrid", use_grid ? 1 : 0);
   // A sampler3D must not share a texture unit with the maps' sampler2Ds, even unused.
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
@@ -931,13 +1081,17 @@ bool TranslucentActorState::run_surfels(
   {
     units->Free(spare_unit);
   }
+  if (add_far)
+  {
+    far->Deactivate();
+  }
   g.surfel_receivers.B->Deactivate();
   return true;
 }
 
 bool TranslucentActorState::gather_at_receivers(vtkOpenGLRenderWindow* window,
   const GpuSettings& settings, ReceiverList& receivers, int part, double r0, double r1,
-  std::string& error)
+  std::string& error, vtkTextureObject* output)
 {
   Gpu& g = *gpu_;
   const std::string fs = WithPieces(sss_gather_receivers_fs, gather_source(settings));
@@ -962,12 +1116,87 @@ bool TranslucentActorState::gather_at_receivers(vtkOpenGLRenderWindow* window,
   state->PushFramebufferBindings();
   g.gather_fbo->SetContext(window);
   g.gather_fbo->Bind();
-  g.gather_fbo->AddColorAttachment(0, receivers.B);
+  g.gather_fbo->AddColorAttachment(0, output ? output : receivers.B.Get());
   g.gather_fbo->ActivateDrawBuffers(1);
   state->vtkglViewport(0, 0, receivers.width, receivers.height);
   g.gather_quad->Render();
   g.gather_fbo->RemoveColorAttachments(1);
   state->PopFramebufferBindings();
+  receivers.points->Deactivate();
+  g.deactivate_maps();
+  return true;
+}
+
+void TranslucentActorState::set_near_field_uniforms(vtkShaderProgram* program)
+{
+  Gpu& g = *gpu_;
+  const auto& rings = g.quadrature->rings();
+  const double kappa_limit = 1.0 / g.quadrature->reach();
+  std::vector<float> radius(kMaxRings, 0.0f), weight(3 * kMaxRings, 0.0f),
+    bend1(3 * kMaxRings, 0.0f), bend2(3 * kMaxRings, 0.0f);
+  std::vector<int> nodes(kMaxRings, 0);
+  for (std::size_t k = 0; k < rings.size(); ++k)
+  {
+    radius[k] = static_cast<float>(rings[k].radius);
+    nodes[k] = rings[k].nodes;
+    // The bend of the ring's weight with the surface as 1 + b1 kappa + b2 kappa^2 through its
+    // exact values at kappa = +-kappa_limit.
+    const Rgb up = NearFieldQuadrature::bend(*g.dipole, rings[k].radius, kappa_limit);
+    const Rgb down = NearFieldQuadrature::bend(*g.dipole, rings[k].radius, -kappa_limit);
+    for (int c = 0; c < 3; ++c)
+    {
+      weight[3 * k + c] = static_cast<float>(rings[k].node_weight[c]);
+      bend1[3 * k + c] = static_cast<float>((up[c] - down[c]) / (2.0 * kappa_limit));
+      bend2[3 * k + c] =
+        static_cast<float>((up[c] + down[c] - 2.0) / (2.0 * kappa_limit * kappa_limit));
+    }
+  }
+  program->SetUniformi("ringCount", static_cast<int>(rings.size()));
+  program->SetUniform1fv("ringRadius", kMaxRings, radius.data());
+  program->SetUniform1iv("ringNodes", kMaxRings, nodes.data());
+  program->SetUniform3fv("ringWeight", kMaxRings, weight.data());
+  program->SetUniform3fv("ringBend1", kMaxRings, bend1.data());
+  program->SetUniform3fv("ringBend2", kMaxRings, bend2.data());
+  program->SetUniformf("kappaLimit", static_cast<float>(kappa_limit));
+  program->SetUniformi("fresnelTable", g.fresnel_table->GetTextureUnit());
+  program->SetUniformi("fresnelTableSize", kFresnelTableSize);
+}
+
+bool TranslucentActorState::run_near_field(
+  vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error)
+{
+  Gpu& g = *gpu_;
+  const std::string pieces = std::string(sss_light_maps) + "\n" + sss_kernel_window + "\n" +
+    sss_dipole + "\n" + sss_near_field;
+  const std::string fs = WithPieces(sss_near_field_fs, pieces);
+  vtkShaderProgram* program = ready_quad(g.near_quad, window, fs.c_str());
+  if (!program)
+  {
+    error = "the near-field shader did not compile";
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  PointPassState point_pass(state);
+  ReceiverList& receivers = g.surfel_receivers;
+  g.activate_maps();
+  receivers.points->Activate();
+  receivers.shape->Activate();
+  g.fresnel_table->Activate();
+  set_gather_uniforms(program, settings, 0, 0.0, 0.0);
+  set_near_field_uniforms(program);
+  program->SetUniformi("receivers", receivers.points->GetTextureUnit());
+  program->SetUniformi("receiverShape", receivers.shape->GetTextureUnit());
+  state->PushFramebufferBindings();
+  g.gather_fbo->SetContext(window);
+  g.gather_fbo->Bind();
+  g.gather_fbo->AddColorAttachment(0, receivers.B);
+  g.gather_fbo->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, receivers.width, receivers.height);
+  g.near_quad->Render();
+  g.gather_fbo->RemoveColorAttachments(1);
+  state->PopFramebufferBindings();
+  g.fresnel_table->Deactivate();
+  receivers.shape->Deactivate();
   receivers.points->Deactivate();
   g.deactivate_maps();
   return true;
@@ -985,7 +1214,7 @@ bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,
   }
   Gpu& g = *gpu_;
   material_ = material;
-  g.local = LocalSurfels::from(surfels.cloud, material.mm_per_unit);
+  g.local = LocalSurfels::from(surfels.cloud, material.mm_per_unit, false);
   list_width_ = kListWidth;
   g.list_height = static_cast<int>((B.size() + kListWidth - 1) / kListWidth);
   std::vector<float> texels(4 * static_cast<std::size_t>(list_width_) * std::max(1, g.list_height), 0.0f);

@@ -32,24 +32,28 @@ enum class KernelStrategy
   Paper = 0,     // 512 map, 49 Gaussian taps in a 40 x 40 window, grid only
   Grid = 1,      // tree walk at the virtual points' surface anchors, grid only
   GridNear = 2,  // far part on the grid, near part per surfel
-  Surfel = 3     // tree walk at every surfel, no grid
+  Surfel = 3,    // tree walk at every surfel, no grid
+  NearFar = 4    // near field on each surfel's local surface, far field by the walk
 };
 
 struct GpuSettings
 {
-  KernelStrategy strategy = KernelStrategy::Grid;
+  KernelStrategy strategy = KernelStrategy::NearFar;
   double opening_angle = 2.0;
   double max_group_diffusion_lengths = 1000.0;
   double near_field_cells = 2.0;
   int grid_level = 0;
   double texel_per_z_r = 0.25;
   int max_map_size = 512;
+  int near_rings = 8;  // near-field quadrature: rings, and at most this many nodes on each
+  int near_nodes = 8;
   bool operator==(const GpuSettings& o) const
   {
     return strategy == o.strategy && opening_angle == o.opening_angle &&
       max_group_diffusion_lengths == o.max_group_diffusion_lengths &&
       near_field_cells == o.near_field_cells && grid_level == o.grid_level &&
-      texel_per_z_r == o.texel_per_z_r && max_map_size == o.max_map_size;
+      texel_per_z_r == o.texel_per_z_r && max_map_size == o.max_map_size &&
+      near_rings == o.near_rings && near_nodes == o.near_nodes;
   }
 };
 
@@ -70,12 +74,15 @@ struct StepReport
   std::size_t lit_samples = 0, virtual_point_count = 0, surfel_count = 0;
   int map_width = 0, map_height = 0, grid_level = 0;
   double texel_mm = 0, grid_spacing_mm = 0;
+  double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
+  int near_nodes = 0;                          // per surfel and light
 };
 
 struct ReceiverList;
 
 constexpr int kMaxLights = 4;
 constexpr int kMaxLevels = 15;
+constexpr int kMaxRings = 32;
 
 class TranslucentActorState
 {
@@ -113,9 +120,15 @@ private:
   bool run_virtual_points(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
     std::string& error);
   bool run_surfels(vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error);
-  // B (eq. 17) at every receiver of the list into its B texture, by one quad over the list.
+  // The near field at every surfel into the surfel receivers' B texture.
+  bool run_near_field(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
+    std::string& error);
+  // B (eq. 17) at every receiver of the list into `output` (the list's B texture when null),
+  // by one quad over the list.
   bool gather_at_receivers(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
-    ReceiverList& receivers, int part, double r0, double r1, std::string& error);
+    ReceiverList& receivers, int part, double r0, double r1, std::string& error,
+    vtkTextureObject* output = nullptr);
+  void set_near_field_uniforms(vtkShaderProgram* program);
   void set_gather_uniforms(vtkShaderProgram* program, const GpuSettings& settings, int part,
     double r0, double r1);
   std::string gather_source(const GpuSettings& settings) const;

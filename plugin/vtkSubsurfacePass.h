@@ -51,12 +51,13 @@ public:
     PAPER = 0,
     GRID = 1,
     GRID_NEAR = 2,
-    SURFEL = 3
+    SURFEL = 3,
+    NEAR_FAR = 4
   };
 
   ///@{
-  /** How B is summed (see the class comment). Default GRID. */
-  vtkSetClampMacro(KernelStrategy, int, PAPER, SURFEL);
+  /** How B is summed (see the class comment). Default NEAR_FAR. */
+  vtkSetClampMacro(KernelStrategy, int, PAPER, NEAR_FAR);
   vtkGetMacro(KernelStrategy, int);
   ///@}
 
@@ -192,7 +193,7 @@ protected:
   vtkSubsurfacePass();
   ~vtkSubsurfacePass() override;
 
-  int KernelStrategy = GRID;
+  int KernelStrategy = NEAR_FAR;
   double OpeningAngle = 2.0;
   double MaxGroupDiffusionLengths = 1000.0;
   double NearFieldCells = 2.0;

@@ -88,7 +88,8 @@ std::vector<vtkOpenGLRenderPass*> RenderPassesOf(vtkActor* act)
 
 void RemoveHooks(std::string& source)
 {
-  for (const char* hook : { "//SSS::Radiance::Dec", "//SSS::Radiance::Impl" })
+  for (const char* hook :
+    { "//SSS::Radiance::Dec", "//SSS::Radiance::Impl", "//SSS::Shape::Dec", "//SSS::Shape::Impl" })
   {
     vtkShaderProgram::Substitute(source, hook, "", true);
   }

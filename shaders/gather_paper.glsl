@@ -1,17 +1,8 @@
 // The paper's kernel: B(x) of eq. 17 from 49 taps, Gaussian-distributed over a 40 x 40 texel
 // window of each light's map around the texel x projects to. Each tap is weighted by the
 // inverse of its sampling density, so the taps estimate the window's sum; nothing outside the
-// window is counted. Needs dipole.glsl and kernel_window.glsl.
+// window is counted. Needs light_maps.glsl, dipole.glsl and kernel_window.glsl.
 
-uniform sampler2D mapPoint;
-uniform sampler2D mapPower;
-uniform sampler2D mapNormal;
-uniform int lightCount;
-uniform vec4 levelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
-uniform vec3 mapAxisU[SSS_MAX_LIGHTS];    // the map's image axes in the local frame
-uniform vec3 mapAxisV[SSS_MAX_LIGHTS];
-uniform vec2 mapCorner[SSS_MAX_LIGHTS];   // plane coordinates of the map's lower-left corner
-uniform float texelSize[SSS_MAX_LIGHTS];
 uniform vec3 paperTaps[49];               // offset in texels (xy), weight (z)
 
 vec3 gatherB(vec3 x)

@@ -2,18 +2,9 @@
 // takes a texel group as one source, with its point covariance as a second-order term, once it
 // subtends less than openingAngle seen from x and spans at most maxGroupDiffusionLengths of
 // every channel whose kernel still matters there (over more, e^(-s_tr d) leaves its
-// second-order expansion). The GPU form of the CPU reference's source tree. Needs dipole.glsl
-// and kernel_window.glsl.
+// second-order expansion). The GPU form of the CPU reference's source tree. Needs
+// light_maps.glsl, dipole.glsl and kernel_window.glsl.
 
-uniform sampler2D mapPoint;
-uniform sampler2D mapPower;
-uniform sampler2D mapNormal;
-uniform sampler2D mapCovariance0;
-uniform sampler2D mapCovariance1;
-uniform int lightCount;
-uniform int levelCount[SSS_MAX_LIGHTS];
-uniform vec4 levelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
-uniform float texelSize[SSS_MAX_LIGHTS];                   // level 0 texel edge, mm
 uniform float openingAngle;
 uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral

@@ -1,13 +1,19 @@
 //VTK::System::Dec
-// Step 1, the illumination map (paper eq. 15): each texel keeps the point of the surfel the
-// light sees, its normal turned towards the light, and E dA = E_light Ft(eta, theta_i) times
-// the texel's area (the cosine of eq. 15 cancels against the surface a texel covers), and the
-// covariance of the surface patch the texel covers (for the pyramid's second-order terms).
+// Step 1, the illumination map (paper eq. 15): each texel keeps the point the light sees,
+// lifted off its flat disc onto the disc's local surface (core/local_surface.h: the point
+// kappa |d|^2 / 2 below the disc's plane at offset d from its centre, the normal tilted by
+// kappa d), that normal turned towards the light, E dA = E_light Ft(eta, theta_i) times the
+// texel's area (the cosine of eq. 15 cancels against the surface a texel covers; none where
+// the lifted normal turns away from the light), and the covariance of the surface patch the
+// texel covers (for the pyramid's second-order terms). A unit normal marks a texel that sees
+// a disc (the near field's visibility test), lit or not.
 
 in vec2 discCoord;
 in vec3 pointVC;
 flat in vec3 normalVC;
 flat in vec4 colour;
+flat in vec3 centreVC;
+flat in float curvature;
 
 uniform mat3 viewToLocal;      // light view -> local mm frame
 uniform vec3 towardsLight;     // local frame, unit
@@ -27,22 +33,26 @@ void main()
   {
     discard;
   }
-  vec3 n = viewToLocal * normalVC;
-  if (dot(n, towardsLight) < 0.0)
+  vec3 d = pointVC - centreVC;  // on the disc's plane
+  vec3 lifted = viewToLocal * (pointVC - 0.5 * curvature * dot(d, d) * normalVC);
+  vec3 n = normalize(viewToLocal * (normalVC + curvature * d));
+  if (dot(viewToLocal * normalVC, towardsLight) < 0.0)
   {
-    n = -n;
+    n = -n;  // the side of the disc the light sees
   }
-  vec3 power = irradianceArea * fresnelTransmittanceRGB(dot(n, towardsLight));
+  float cosI = dot(n, towardsLight);
+  vec3 power = cosI > 0.0 ? irradianceArea * fresnelTransmittanceRGB(cosI) : vec3(0.0);
   if (albedoFromColour)
   {
     power *= colour.rgb;
   }
-  gl_FragData[0] = vec4(viewToLocal * pointVC, power.r + power.g + power.b);
-  gl_FragData[1] = vec4(power, 1.0);  // w counts lit texels
+  float lit = cosI > 0.0 ? 1.0 : 0.0;
+  gl_FragData[0] = vec4(lifted, power.r + power.g + power.b);
+  gl_FragData[1] = vec4(power, lit);  // w counts lit texels
   gl_FragData[2] = vec4(n, 0.0);      // w: spread along the light (none for one texel)
   // The patch is the texel square lifted onto the disc's plane: its edges are the map axes
   // tilted by the slope along the light (clamped at grazing), each uniform over one texel.
-  float cosL = max(dot(n, towardsLight), 0.1);
+  float cosL = max(cosI, 0.1);
   vec3 edgeU = mapAxisU - dot(n, mapAxisU) / cosL * towardsLight;
   vec3 edgeV = mapAxisV - dot(n, mapAxisV) / cosL * towardsLight;
   float var = texelEdge * texelEdge / 12.0;

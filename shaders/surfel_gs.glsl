@@ -8,6 +8,7 @@ layout(triangle_strip, max_vertices = 4) out;
 in vec3 centreVC_gs[];
 in vec3 normalVC_gs[];
 flat in vec4 colour_gs[];
+in float curvature_gs[];
 
 uniform mat4 viewToClip;
 uniform float radiusVC;  // disc radius in view units
@@ -16,6 +17,8 @@ out vec2 discCoord;  // position on the disc, in radii
 out vec3 pointVC;    // the point on the disc, view coordinates
 flat out vec3 normalVC;
 flat out vec4 colour;
+flat out vec3 centreVC;
+flat out float curvature;
 
 void main()
 {
@@ -33,6 +36,8 @@ void main()
     pointVC = p;
     normalVC = n;
     colour = colour_gs[0];
+    centreVC = centreVC_gs[0];
+    curvature = curvature_gs[0];
     EmitVertex();
   }
   EndPrimitive();

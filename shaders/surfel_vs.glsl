@@ -14,8 +14,10 @@ uniform vec3 ambientDiffuse;  // ambient, diffuse, opacity of the plain (non-tra
 out vec3 centreVC_gs;
 out vec3 normalVC_gs;
 flat out vec4 colour_gs;
+out float curvature_gs;  // mean curvature, 1/mm (the view from a light lifts its texels with it)
 
 //SSS::Radiance::Dec
+//SSS::Shape::Dec
 
 void main()
 {
@@ -29,4 +31,6 @@ void main()
                      colourMC.a * ambientDiffuse.z);
   //SSS::Radiance::Impl
   colour_gs = colour;
+  curvature_gs = 0.0;
+  //SSS::Shape::Impl
 }

@@ -50,10 +50,6 @@ GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
   material->SetColoursAsAlbedo(!cloud.albedo.empty());
   material->ApplyTo(actor);
   renderer->AddActor(actor);
-  pass->SetKernelStrategy(vtkSubsurfacePass::SURFEL);
-  pass->SetMaxMapSize(4096);
-  pass->SetOpeningAngle(0.5);
-  pass->SetMaxGroupDiffusionLengths(2.0);
   renderer->SetPass(pass);
   set_lights(lights);
   const Eigen::Vector3d c = cloud.bounds().center() + shift;
@@ -77,16 +73,6 @@ void GpuScene::set_lights(const std::vector<DirectionalLight>& lights) {
     light->SetIntensity(l.irradiance);
     renderer->AddLight(light);
   }
-}
-
-void GpuScene::use_pass_defaults() {
-  vtkNew<vtkSubsurfacePass> defaults;
-  pass->SetKernelStrategy(defaults->GetKernelStrategy());
-  pass->SetMaxMapSize(defaults->GetMaxMapSize());
-  pass->SetOpeningAngle(defaults->GetOpeningAngle());
-  pass->SetMaxGroupDiffusionLengths(defaults->GetMaxGroupDiffusionLengths());
-  pass->SetGridLevel(defaults->GetGridLevel());
-  pass->SetTexelPerZr(defaults->GetTexelPerZr());
 }
 
 std::vector<Rgb> GpuScene::render_B() {

@@ -29,16 +29,12 @@ struct GpuScene {
   vtkNew<vtkSubsurfacePass> pass;
 
   // The cloud (validated, scene units) shifted by `shift`, lit by `lights`, seen along
-  // `view` (from the object towards the camera), orthographic. A cloud with albedo passes it
-  // as 8-bit point colours with ColoursAsAlbedo on.
+  // `view` (from the object towards the camera), orthographic, with the pass's defaults. A
+  // cloud with albedo passes it as 8-bit point colours with ColoursAsAlbedo on.
   GpuScene(const SurfelCloud& cloud, const Material& m, const std::vector<DirectionalLight>& lights,
            const Eigen::Vector3d& view = Eigen::Vector3d(0, 0, 1), int size = 256,
            const Eigen::Vector3d& shift = Eigen::Vector3d::Zero());
   void set_lights(const std::vector<DirectionalLight>& lights);
-  // The scene starts with the accurate setting that the accuracy tests hold to the reference
-  // (SURFEL, 4096 map, opening angle 0.5, groups of 2 diffusion lengths); this goes back to
-  // the pass's own defaults.
-  void use_pass_defaults();
   // Renders one frame and returns each surfel's B (NaN for points the mapper left out).
   std::vector<Rgb> render_B();
 };
