@@ -25,12 +25,17 @@ inline SurfacePoint on_local_surface(const Eigen::Vector3d& p, const Eigen::Vect
   return {p + d - 0.5 * kappa * d.squaredNorm() * n, (n + kappa * d).normalized()};
 }
 
-// A tangent frame of n, the same on the CPU and the GPU (shaders/local_surface.glsl).
+// A tangent frame of n, the same for n and -n (so that a flipped normal lays out the same
+// points) and on the CPU and the GPU (shaders/local_surface.glsl): t1 from the normal turned
+// to have its largest component positive, t2 = n x t1.
 inline void tangent_frame(const Eigen::Vector3d& n, Eigen::Vector3d& t1, Eigen::Vector3d& t2) {
+  int axis;
+  n.cwiseAbs().maxCoeff(&axis);
+  const Eigen::Vector3d m = n[axis] < 0.0 ? Eigen::Vector3d(-n) : n;
   const Eigen::Vector3d helper =
-      std::fabs(n.x()) < 0.7 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  t1 = n.cross(helper).normalized();
-  t2 = n.cross(t1);
+      std::fabs(m.x()) < 0.7 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  t1 = m.cross(helper).normalized();
+  t2 = m.cross(t1);
 }
 
 // How far along the light, from a node y towards the light, the local surface of the disc the

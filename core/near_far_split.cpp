@@ -28,8 +28,6 @@ NearFarSplit NearFarSplit::choose(const Dipole& dipole, double min_r0, double ke
   return split;
 }
 
-double NearFarSplit::minimum_r0(double disc_radius, double texel) {
-  return std::max(0.5 * disc_radius, 2.0 * texel);
-}
+double NearFarSplit::minimum_r0(double disc_radius) { return disc_radius; }
 
 }  // namespace sss

@@ -20,12 +20,11 @@ struct NearFarSplit {
   // 2 min_r0. Throws std::invalid_argument for a min_r0 that is not finite and positive.
   static NearFarSplit choose(const Dipole& dipole, double min_r0, double kernel_tolerance);
 
-  // The smallest r0 the near field needs: the disc stack at the receiver (half a disc radius,
-  // so r1 covers the receiver's own disc) and the light map's texels that the far field's
-  // point sources come from (2 texels) lie inside it. Other surfaces within r1 (the far side
-  // of a part thinner than r1) reach the receiver only through the far field's weight, so r0
-  // is kept no larger than these need.
-  static double minimum_r0(double disc_radius, double texel);
+  // The r0 the near field needs: one disc radius, so that the near field holds the receiver's
+  // own disc, the discs stacked over it (scanner noise, a curved surface) and its nearest
+  // neighbours' cells with their true shapes; farther surfels are the far field's sources,
+  // each cell a patch of its area split near a receiver (source_tree.h).
+  static double minimum_r0(double disc_radius);
 };
 
 }  // namespace sss

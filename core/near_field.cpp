@@ -1,10 +1,12 @@
 #include "near_field.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdint>
+#include <limits>
 
-#include "fresnel.h"
 #include "local_surface.h"
+#include "surfel_cells.h"
+#include "surfel_irradiance.h"
 
 namespace sss {
 namespace {
@@ -12,79 +14,128 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kGoldenFraction = 0.6180339887498949;
 
-// A fraction in [0, 1) per receiver, so that neighbouring receivers' nodes do not line up.
-double rotation_of(std::size_t index) {
-  std::uint64_t h = static_cast<std::uint64_t>(index) * 0x9E3779B97F4A7C15ull;
-  h ^= h >> 29;
-  h *= 0xBF58476D1CE4E5B9ull;
-  h ^= h >> 32;
-  return static_cast<double>(h >> 11) / 9007199254740992.0;
-}
+struct Row {
+  std::vector<std::uint32_t> source;
+  std::vector<Rgb> weight;
+  void add(std::uint32_t j, const Rgb& w) {
+    for (std::size_t k = 0; k < source.size(); ++k)
+      if (source[k] == j) {
+        for (int c = 0; c < 3; ++c) weight[k][c] += w[c];
+        return;
+      }
+    source.push_back(j);
+    weight.push_back(w);
+  }
+};
 
 }  // namespace
 
-NearField::NearField(const LocalSurfels& surfels, const Material& material,
-                     const IlluminationSamples& light, const KernelWindow& window, double reach,
-                     const NearFieldSettings& settings)
-    : surfels_(surfels),
-      light_(light),
-      material_(material),
-      dipole_(material),
-      quadrature_(dipole_, window, reach, settings.quadrature),
-      kappa_limit_(1.0 / quadrature_.reach()) {}
-
-Rgb NearField::B(std::size_t receiver) const {
+Rgb NearFieldWeights::B(std::size_t row, const std::vector<Rgb>& E) const {
   Rgb sum{0.0, 0.0, 0.0};
-  const Eigen::Vector3d& p = surfels_.positions[receiver];
-  const bool curved = surfels_.curvature.size() == surfels_.size();
-  const double kappa_given = curved ? surfels_.curvature[receiver] : 0.0;
-  const double kappa_surface = std::clamp(kappa_given, -kappa_limit_, kappa_limit_);
-  const double roughness = curved ? surfels_.roughness[receiver] : 0.0;
-  const double thickness = surface_thickness(roughness, kappa_given, surfels_.radius);
-  const double rotation = rotation_of(receiver);
-  const Rgb albedo_one{1.0, 1.0, 1.0};
-  for (std::size_t li = 0; li < light_.maps.size(); ++li) {
-    const OrthoView& map = light_.maps[li];
-    const DiscHits& hits = light_.hits[li];
-    const Eigen::Vector3d& l = light_.lights[li].direction;
-    const double irradiance = light_.lights[li].irradiance;
-    if (irradiance == 0.0) continue;
-    // The side of the receiver that faces the light (scans may hold either orientation).
-    const double side = surfels_.normals[receiver].dot(l) < 0.0 ? -1.0 : 1.0;
-    const Eigen::Vector3d n = side * surfels_.normals[receiver];
-    const double kappa = side * kappa_surface;
-    Eigen::Vector3d t1, t2;
-    tangent_frame(n, t1, t2);
-    const auto& rings = quadrature_.rings();
-    for (std::size_t k = 0; k < rings.size(); ++k) {
-      const NearFieldRing& ring = rings[k];
-      const Rgb bent = NearFieldQuadrature::bend(dipole_, ring.radius, kappa);
-      const double offset = rotation + kGoldenFraction * static_cast<double>(k);
-      for (int a = 0; a < ring.nodes; ++a) {
-        const double angle = 2.0 * kPi * (a + offset) / ring.nodes;
-        const Eigen::Vector3d d = ring.radius * (std::cos(angle) * t1 + std::sin(angle) * t2);
-        const SurfacePoint y = on_local_surface(p, n, kappa, d);
-        const double cos_i = y.normal.dot(l);
-        if (!(cos_i > 0.0)) continue;
-        const double u = (y.position.dot(map.u) - map.corner.x()) / map.pixel;
-        const double v = (y.position.dot(map.v) - map.corner.y()) / map.pixel;
-        if (!(u >= 0.0 && v >= 0.0 && u < map.width && v < map.height)) continue;
-        const std::int32_t seen =
-            hits.surfel[static_cast<std::size_t>(v) * map.width + static_cast<std::size_t>(u)];
-        if (seen < 0) continue;
-        const SurfacePoint hit =
-            seen_point(surfels_, map, hits, static_cast<int>(u), static_cast<int>(v));
-        const double along = distance_to_seen_surface(y.position, l, hit.position, hit.normal);
-        if (std::fabs(along) > visibility_tolerance(thickness, cos_i)) continue;
-        const Rgb& albedo = surfels_.albedo.empty() ? albedo_one : surfels_.albedo[seen];
-        for (int c = 0; c < 3; ++c)
-          sum[c] += ring.node_weight[c] * bent[c] * irradiance *
-                    fresnel_transmittance(material_.eta[c], cos_i) * cos_i * albedo[c];
+  for (std::uint32_t e = first[row]; e < first[row + 1]; ++e)
+    for (int c = 0; c < 3; ++c) sum[c] += weight[e][c] * E[source[e]][c];
+  for (double& v : sum) v /= kPi;
+  return sum;
+}
+
+NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vector<double>& area,
+                                    const SurfelIndex& index, const Dipole& dipole,
+                                    const NearFieldQuadrature& quadrature,
+                                    const KernelWindow& window,
+                                    const std::vector<std::size_t>& receivers) {
+  const std::size_t n = receivers.empty() ? surfels.size() : receivers.size();
+  std::vector<Row> rows(n);
+  const double r = surfels.radius;
+  const double reach = quadrature.reach();
+  const double kappa_limit = 1.0 / reach;
+  const long count = static_cast<long>(n);
+#pragma omp parallel default(none) shared(surfels, area, index, dipole, quadrature, window, \
+                                          receivers, rows, count, r, reach, kappa_limit)
+  {
+    std::vector<std::size_t> near, other;
+    std::vector<std::pair<double, std::size_t>> same;  // distance from the receiver, index
+#pragma omp for schedule(dynamic, 64)
+    for (long k = 0; k < count; ++k) {
+      const std::size_t o = receivers.empty() ? static_cast<std::size_t>(k) : receivers[k];
+      const Eigen::Vector3d& p = surfels.positions[o];
+      const Eigen::Vector3d& normal = surfels.normals[o];
+      const double kappa = std::clamp(surfels.curvature[o], -kappa_limit, kappa_limit);
+      const double thickness = surface_thickness(surfels.roughness[o], surfels.curvature[o], r);
+      index.within(p, reach + r, near);
+      same.clear();
+      other.clear();
+      for (std::size_t j : near) {
+        const double d = (surfels.positions[j] - p).norm();
+        if (j == o || on_same_surface(surfels, o, j, thickness)) same.emplace_back(d, j);
+        else if (d < reach) other.push_back(j);
+      }
+      std::sort(same.begin(), same.end());
+      Eigen::Vector3d t1, t2;
+      tangent_frame(normal, t1, t2);
+      const double rotation = pattern_rotation(o);
+      Row& row = rows[k];
+      const auto& rings = quadrature.rings();
+      for (std::size_t ring_index = 0; ring_index < rings.size(); ++ring_index) {
+        const NearFieldRing& ring = rings[ring_index];
+        const double share = 1.0 / static_cast<double>(ring.radii.size());
+        const double offset = rotation + kGoldenFraction * static_cast<double>(ring_index);
+        for (double rho : ring.radii) {
+          const Rgb bent = NearFieldQuadrature::bend(dipole, rho, kappa);
+          Rgb point;
+          for (int c = 0; c < 3; ++c) point[c] = share * ring.node_weight[c] * bent[c];
+          for (int a = 0; a < ring.nodes; ++a) {
+            const double angle = 2.0 * kPi * (a + offset) / ring.nodes;
+            const Eigen::Vector3d y =
+                on_local_surface(p, normal, kappa, rho * (std::cos(angle) * t1 + std::sin(angle) * t2))
+                    .position;
+            // The nearest surfel of this surface owns the point; candidates are sorted by their
+            // distance d from the receiver, and none with d > 2 |y - p| can beat the receiver.
+            std::size_t owner = std::numeric_limits<std::size_t>::max();
+            double best = r * r;  // a point farther than a disc radius from every surfel: none
+            const double reach_out = 2.0 * rho + 1e-12;
+            for (const auto& [d, j] : same) {
+              if (d > reach_out && owner != std::numeric_limits<std::size_t>::max()) break;
+              const double d2 = (y - surfels.positions[j]).squaredNorm();
+              if (d2 < best || (d2 == best && j < owner)) {
+                best = d2;
+                owner = j;
+              }
+            }
+            if (owner != std::numeric_limits<std::size_t>::max())
+              row.add(static_cast<std::uint32_t>(owner), point);
+          }
+        }
+      }
+      for (std::size_t j : other) {
+        const Eigen::Vector3d d = p - surfels.positions[j];
+        // The other surface's material lies on its side away from the receiver.
+        const Eigen::Vector3d nj = surfels.normals[j].dot(d) > 0.0
+                                       ? Eigen::Vector3d(-surfels.normals[j])
+                                       : surfels.normals[j];
+        const double keep = window.weight(d.norm());
+        if (keep <= 0.0 || !(area[j] > 0.0)) continue;
+        Rgb w;
+        for (int c = 0; c < 3; ++c) {
+          const DipoleChannel& ch = dipole.channel[c];
+          w[c] = area[j] * keep *
+                 ch.Rd_from_distances((surfels.positions[j] - ch.z_r * nj - p).norm(),
+                                      (surfels.positions[j] + ch.z_v * nj - p).norm());
+        }
+        row.add(static_cast<std::uint32_t>(j), w);
       }
     }
   }
-  for (double& v : sum) v /= kPi;
-  return sum;
+  NearFieldWeights out;
+  out.first.resize(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k)
+    out.first[k + 1] = out.first[k] + static_cast<std::uint32_t>(rows[k].source.size());
+  out.source.reserve(out.first[n]);
+  out.weight.reserve(out.first[n]);
+  for (Row& row : rows) {
+    out.source.insert(out.source.end(), row.source.begin(), row.source.end());
+    out.weight.insert(out.weight.end(), row.weight.begin(), row.weight.end());
+  }
+  return out;
 }
 
 }  // namespace sss

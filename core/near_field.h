@@ -1,50 +1,46 @@
-// The near field of eq. 17 at a receiver, integrated on its local surface (local_surface.h):
-//   B_near(x_o) = 1/pi Sum_q W_q C_q E(y_q),   E(y) = E_light Ft(eta, theta) cos(theta) albedo V(y)
-// over the nodes y_q of a NearFieldQuadrature laid out on the receiver's osculating paraboloid,
-// each node's cosine from the paraboloid's normal there; C_q = Rd(y_q, n_q -> x_o) / Rd(rho_q)
-// bends the ring's planar weight with the surface (eq. 3 from the node's point and normal, as
-// the far field evaluates its sources), so the split radius does not change B. V(y) = 1 where the local surface of
-// the disc the light's map sees at y's texel passes within visibility_tolerance of y along
-// the light (the receiver's surface_thickness): the same surface.
-// A point seen in front of it shadows the node; nothing there, or only something behind it,
-// means the surface ends (an open edge, a hole): no light enters. The albedo is that of the
-// disc the light sees. This is the CPU form of shaders/near_field.glsl.
+// Step 2, second part: the near field of eq. 17 at each receiver, as weights on its
+// neighbours' irradiance that the light does not change,
+//   B_near(x_o) = 1/pi Sum_j w_oj E_j,
+// w_oj = the near part of the kernel (NearFieldQuadrature, bent with the surface) integrated
+// over the part of the receiver's local surface (local_surface.h) that surfel j's cell covers:
+// each quadrature node on the receiver's osculating paraboloid belongs to the nearest surfel of
+// that surface within a disc radius of it, or to none (an open edge, a hole). Surfels of other
+// surfaces within the near reach (the far side of a thin part) weigh in as point sources of
+// their cell's area, w_oj = a_j Rd(x_j, n_j -> x_o) times the near part of the window.
+// Computed when the geometry or the material changes; a light move only re-weights it by the
+// new E. Memory: one entry (source index and three weights) per neighbour in reach.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
-#include "illumination.h"
+#include "dipole.h"
+#include "kernel_window.h"
 #include "local_surfels.h"
 #include "material.h"
 #include "near_field_quadrature.h"
+#include "surfel_index.h"
 
 namespace sss {
 
-struct NearFieldSettings {
-  QuadratureSettings quadrature;
+struct NearFieldWeights {
+  // Row r (one per receiver asked for) holds entries [first[r], first[r + 1]).
+  std::vector<std::uint32_t> first;
+  std::vector<std::uint32_t> source;  // the surfel whose irradiance an entry weighs
+  std::vector<Rgb> weight;            // Integral of the kept kernel over its part (no unit)
+  std::size_t rows() const { return first.empty() ? 0 : first.size() - 1; }
+
+  // 1/pi Sum w E over row r.
+  Rgb B(std::size_t row, const std::vector<Rgb>& E) const;
 };
 
-class NearField {
- public:
-  // `light` is the illumination map of the same surfels (illuminate); the quadrature covers
-  // the near part of the kernel that `window` keeps, out to `reach` mm.
-  NearField(const LocalSurfels& surfels, const Material& material,
-            const IlluminationSamples& light, const KernelWindow& window, double reach,
-            const NearFieldSettings& settings);
-
-  // Near part of B (eq. 17) at surfel `receiver` (index into the surfels).
-  Rgb B(std::size_t receiver) const;
-
-  const NearFieldQuadrature& quadrature() const { return quadrature_; }
-
- private:
-  const LocalSurfels& surfels_;
-  const IlluminationSamples& light_;
-  Material material_;
-  Dipole dipole_;
-  NearFieldQuadrature quadrature_;
-  double kappa_limit_ = 0.0;
-};
+// Weights for `receivers` (indices into the surfels; empty: every surfel, in order). `area`
+// from cell_areas; `window` the near part the quadrature was built for.
+NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vector<double>& area,
+                                    const SurfelIndex& index, const Dipole& dipole,
+                                    const NearFieldQuadrature& quadrature,
+                                    const KernelWindow& window,
+                                    const std::vector<std::size_t>& receivers = {});
 
 }  // namespace sss

@@ -52,11 +52,12 @@ NearFieldQuadrature::NearFieldQuadrature(const Dipole& dipole, const KernelWindo
                                          double reach, const QuadratureSettings& settings)
     : reach_(reach) {
   if (settings.rings < 1 || settings.min_nodes < 1 || settings.max_nodes < settings.min_nodes ||
-      !std::isfinite(reach) || !(reach > 0.0)) {
+      settings.radial < 1 || !std::isfinite(reach) || !(reach > 0.0)) {
     std::ostringstream msg;
     msg << "[sss::NearFieldQuadrature] rings = " << settings.rings << ", nodes per ring "
-        << settings.min_nodes << " to " << settings.max_nodes << " and reach = " << reach
-        << " mm must be at least 1, 1 <= min <= max and finite > 0";
+        << settings.min_nodes << " to " << settings.max_nodes << ", radial shares "
+        << settings.radial << " and reach = " << reach
+        << " mm must be at least 1, 1 <= min <= max, at least 1 and finite > 0";
     throw std::invalid_argument(msg.str());
   }
   if (window.part == KernelWindow::Part::Near) reach_ = std::min(reach_, window.r1);
@@ -94,6 +95,10 @@ NearFieldQuadrature::NearFieldQuadrature(const Dipole& dipole, const KernelWindo
       const double width = std::max(edge[k + 1] - edge[k], 1e-12 * reach_);
       ring.nodes = std::clamp(static_cast<int>(std::lround(2.0 * kPi * ring.radius / width)),
                               settings.min_nodes, settings.max_nodes);
+      for (int m = 0; m < settings.radial; ++m)
+        ring.radii.push_back(quantile((k + (m + 0.5) / settings.radial) / n));
+    } else {
+      ring.radii = {0.0};
     }
     for (int c = 0; c < 3; ++c) {
       const double upto = kept_integral(dipole.channel[c], window, edge[k + 1]);
@@ -123,6 +128,12 @@ Rgb NearFieldQuadrature::bend(const Dipole& dipole, double rho, double kappa) {
 int NearFieldQuadrature::node_count() const {
   int count = 0;
   for (const NearFieldRing& r : rings_) count += r.nodes;
+  return count;
+}
+
+int NearFieldQuadrature::point_count() const {
+  int count = 0;
+  for (const NearFieldRing& r : rings_) count += r.nodes * static_cast<int>(r.radii.size());
   return count;
 }
 

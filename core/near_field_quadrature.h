@@ -1,9 +1,10 @@
 // Quadrature of the near part of eq. 17 on the receiver's local surface: rings around the
 // receiver, each holding an equal share of the kernel's near-part integral (mixed over the
-// three channels), with nodes spread evenly in angle. A node's weight per channel is the exact
-// integral of (1 - w(rho)) Rd(rho) 2 pi rho d rho over its ring, over the ring's node count, so
-// the weights of a uniformly lit plane sum to the near part's closed form whatever the number
-// of nodes or the surfel spacing.
+// three channels), with nodes spread evenly in angle, each node split into equal shares at
+// several radii across its ring. A node's weight per channel is the exact integral of
+// (1 - w(rho)) Rd(rho) 2 pi rho d rho over its ring, over the ring's node count, so the weights
+// of a uniformly lit plane sum to the near part's closed form whatever the number of nodes or
+// the surfel spacing.
 #pragma once
 
 #include <vector>
@@ -15,15 +16,17 @@
 namespace sss {
 
 struct NearFieldRing {
-  double radius = 0.0;  // mm from the receiver, in its tangent plane (0: the centre node)
-  int nodes = 1;        // spread evenly in angle
-  Rgb node_weight{};    // per node and channel: its share of the near integral (dimensionless)
+  double radius = 0.0;         // mm from the receiver: the ring's middle (0: the centre node)
+  std::vector<double> radii;   // where a node's equal shares lie across the ring, mm
+  int nodes = 1;               // spread evenly in angle
+  Rgb node_weight{};           // per node and channel: its share of the near integral
 };
 
 struct QuadratureSettings {
   int rings = 8;        // including the centre node's disc
   int min_nodes = 4;    // per ring, outside the centre
   int max_nodes = 12;
+  int radial = 2;       // shares per node across its ring (the centre node has one)
 };
 
 class NearFieldQuadrature {
@@ -37,7 +40,8 @@ class NearFieldQuadrature {
 
   const std::vector<NearFieldRing>& rings() const { return rings_; }
   double reach() const { return reach_; }
-  int node_count() const;
+  int node_count() const;   // nodes (angles) over all rings
+  int point_count() const;  // nodes times their shares
   // Sum of every node's weight: Integral_0^reach (1 - w) Rd 2 pi rho d rho per channel.
   Rgb total_weight() const;
 

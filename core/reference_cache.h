@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "illumination.h"
+#include "light_map.h"
 #include "material.h"
 #include "reference_renderer.h"
 #include "surfel_cloud.h"
@@ -16,14 +16,14 @@
 namespace sss {
 
 // Raise when the file layout or what render_reference computes changes: old files then miss.
-constexpr std::uint32_t kReferenceCacheVersion = 2;
+constexpr std::uint32_t kReferenceCacheVersion = 3;
 
 // What identifies one reference result.
 struct ReferenceKey {
   // FNV-1a over the cloud (positions, normals, albedo, radius), the material (sigma_a,
   // sigma_s', eta, mm per unit), the lights in order (direction, irradiance), every field of
-  // IlluminationSettings, SourceTreeSettings and NearFieldSettings, the receivers asked for,
-  // and kReferenceCacheVersion.
+  // ReferenceSettings that changes the result (light map, samples, quadrature, tree, r0 and
+  // the receivers asked for), and kReferenceCacheVersion.
   std::uint64_t hash = 0;
   std::size_t surfels = 0;  // a stored file must hold exactly this many values of B
   std::string label;        // readable prefix of the file name: the material's name

@@ -1,41 +1,82 @@
 #include "reference_renderer.h"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
+#include "local_surface.h"
 #include "parallel_points.h"
 #include "stopwatch.h"
+#include "surfel_cells.h"
 
 namespace sss {
 
-void RadianceStats::record_sources(const IlluminationSamples& samples, std::size_t surfel_count) {
-  surfels = surfel_count;
-  lit_samples = samples.size();
-  if (!samples.maps.empty()) {
-    texel_mm = samples.maps[0].pixel;
-    map_width = samples.maps[0].width;
-    map_height = samples.maps[0].height;
+PointSources cell_sources(const LocalSurfels& surfels, const std::vector<double>& area,
+                          const LightMaps& light, const SurfelIrradiance& E) {
+  PointSources sources;
+  for (std::size_t li = 0; li < light.size(); ++li) {
+    const Eigen::Vector3d& l = light.lights[li].direction;
+    for (std::size_t j = 0; j < surfels.size(); ++j) {
+      const Rgb& e = E[li][j];
+      if (!(e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0) || !(area[j] > 0.0)) continue;
+      const Eigen::Vector3d n = surfels.normals[j].dot(l) < 0.0 ? Eigen::Vector3d(-surfels.normals[j])
+                                                                : surfels.normals[j];
+      Eigen::Vector3d t1, t2;
+      tangent_frame(n, t1, t2);
+      const double side = std::sqrt(area[j] / 3.14159265358979323846);  // the cell as a disc
+      sources.position.push_back(surfels.positions[j]);
+      sources.normal.push_back(n);
+      sources.power.push_back({e[0] * area[j], e[1] * area[j], e[2] * area[j]});
+      sources.edge_u.push_back(side * t1);
+      sources.edge_v.push_back(side * t2);
+    }
   }
+  return sources;
 }
 
 ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& material,
                                  const std::vector<DirectionalLight>& lights,
                                  const ReferenceSettings& settings)
     : dipole_(material), tree_settings_(settings.tree) {
+  for (std::size_t i : settings.receivers) {
+    if (i >= cloud.size()) {
+      std::ostringstream msg;
+      msg << "[sss::ReferenceSolver] receiver " << i << " of a cloud of " << cloud.size()
+          << " surfels";
+      throw std::invalid_argument(msg.str());
+    }
+  }
+  if (settings.irradiance_samples < 1)
+    throw std::invalid_argument("[sss::ReferenceSolver] irradiance_samples must be >= 1");
   Stopwatch clock;
   surfels_ = LocalSurfels::from(cloud, material.mm_per_unit);
+  index_ = std::make_unique<SurfelIndex>(surfels_.positions);
+  area_ = cell_areas(surfels_, *index_);
+  const double r0 = settings.r0_mm > 0.0 ? settings.r0_mm : NearFarSplit::minimum_r0(surfels_.radius);
+  split_ = NearFarSplit::choose(dipole_, r0 > 0.0 ? r0 : 1.0, settings.tree.kernel_tolerance);
+  const NearFieldQuadrature quadrature(dipole_, split_.near, split_.reach, settings.quadrature);
+  receivers_ = settings.receivers;
+  if (receivers_.empty()) {
+    receivers_.resize(cloud.size());
+    for (std::size_t i = 0; i < receivers_.size(); ++i) receivers_[i] = i;
+  }
+  weights_ = near_field_weights(surfels_, area_, *index_, dipole_, quadrature, split_.near,
+                                receivers_);
   stats_.seconds_geometry = clock.lap();
-  samples_ = illuminate(surfels_, material, lights, settings.illumination);
-  stats_.seconds_illumination = clock.lap();
-  const double texel = samples_.maps.empty() ? 0.0 : samples_.maps[0].pixel;
-  const double r0 = settings.r0_mm > 0.0 ? settings.r0_mm
-                                         : NearFarSplit::minimum_r0(surfels_.radius, texel);
-  split_ = NearFarSplit::choose(dipole_, r0, settings.tree.kernel_tolerance);
-  near_ = std::make_unique<NearField>(surfels_, material, samples_, split_.near, split_.reach,
-                                      settings.near);
-  stats_.record_sources(samples_, surfels_.size());
-  stats_.near_nodes = static_cast<std::size_t>(near_->quadrature().node_count());
+  maps_ = render_light_maps(surfels_, lights, settings.light_map);
+  E_ = surfel_irradiance(surfels_, area_, material, maps_, settings.irradiance_samples);
+  E_total_ = total_irradiance(E_, surfels_.size());
+  sources_ = cell_sources(surfels_, area_, maps_, E_);
+  stats_.seconds_light = clock.lap();
+  stats_.surfels = surfels_.size();
+  stats_.lit_cells = sources_.size();
+  if (!maps_.maps.empty()) {
+    stats_.texel_mm = maps_.maps[0].pixel;
+    stats_.map_width = maps_.maps[0].width;
+    stats_.map_height = maps_.maps[0].height;
+  }
+  stats_.near_nodes = static_cast<std::size_t>(quadrature.node_count());
   stats_.split_r0_mm = split_.has_far ? split_.far.r0 : 0.0;
   stats_.split_r1_mm = split_.reach;
   if (split_.has_far) {
@@ -46,15 +87,17 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
 
 const SourceTree& ReferenceSolver::tree() const {
   std::call_once(tree_built_, [&] {
-    tree_ = std::make_unique<SourceTree>(samples_, dipole_, tree_settings_);
+    tree_ = std::make_unique<SourceTree>(sources_, dipole_, tree_settings_);
   });
   return *tree_;
 }
 
-Rgb ReferenceSolver::B(std::size_t index) const {
-  Rgb b = near_->B(index);
+Rgb ReferenceSolver::near_B(std::size_t k) const { return weights_.B(k, E_total_); }
+
+Rgb ReferenceSolver::B(std::size_t k) const {
+  Rgb b = near_B(k);
   if (split_.has_far) {
-    const Rgb far = tree().B(surfels_.positions[index], split_.far);
+    const Rgb far = tree().B(surfels_.positions[receivers_[k]], split_.far);
     for (int c = 0; c < 3; ++c) b[c] += far[c];
   }
   return b;
@@ -68,30 +111,17 @@ Rgb ReferenceSolver::sources_B_at(const Eigen::Vector3d& scene_point,
 SurfelRadiance render_reference(const SurfelCloud& cloud, const Material& material,
                                 const std::vector<DirectionalLight>& lights,
                                 const ReferenceSettings& settings) {
-  for (std::size_t i : settings.receivers) {
-    if (i >= cloud.size()) {
-      std::ostringstream msg;
-      msg << "[sss::render_reference] receiver " << i << " of a cloud of " << cloud.size()
-          << " surfels";
-      throw std::invalid_argument(msg.str());
-    }
-  }
   const ReferenceSolver solver(cloud, material, lights, settings);
   SurfelRadiance result;
   result.stats = solver.stats();
   Stopwatch clock;
-  std::vector<std::size_t> all;
-  const std::vector<std::size_t>* receivers = &settings.receivers;
-  if (receivers->empty()) {
-    all.resize(cloud.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    receivers = &all;
-  }
+  std::vector<std::size_t> rows(solver.receivers().size());
+  for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = k;
   const std::vector<Rgb> values =
-      evaluate_indices(*receivers, [&](std::size_t i) { return solver.B(i); }, settings.progress);
+      evaluate_indices(rows, [&](std::size_t k) { return solver.B(k); }, settings.progress);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   result.B.assign(cloud.size(), Rgb{nan, nan, nan});
-  for (std::size_t k = 0; k < receivers->size(); ++k) result.B[(*receivers)[k]] = values[k];
+  for (std::size_t k = 0; k < rows.size(); ++k) result.B[solver.receivers()[k]] = values[k];
   result.stats.seconds_surfels = clock.lap();
   return result;
 }

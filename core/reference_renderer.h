@@ -1,39 +1,46 @@
-// The CPU reference: eq. 16 evaluated at every surfel, in double precision and in parallel;
-// the ground truth for the GPU path. B = near field + far field, split by NearFarSplit: the
-// near field integrated on each receiver's local surface with a fine quadrature against the
-// light's map (near_field.h), the far field summed over every lit texel of the light's map,
-// lifted onto its disc's local surface, by the source tree (source_tree.h).
+// The CPU reference: eq. 16 evaluated at every surfel in double precision and in parallel;
+// the ground truth for the GPU path. Each surfel stands for its cell (surfel_cells.h) lit with
+// the irradiance averaged over it (surfel_irradiance.h, 64 samples against a light map of
+// texels an eighth of a disc radius); B = near field + far field, split by NearFarSplit: the
+// near field by weights from a fine quadrature on each receiver's local surface
+// (near_field.h), the far field summed over every lit cell by the source tree
+// (source_tree.h), each cell split near the receiver.
 #pragma once
 
 #include <memory>
 #include <mutex>
 #include <vector>
 
-#include "illumination.h"
+#include "light_map.h"
 #include "local_surfels.h"
 #include "near_far_split.h"
 #include "near_field.h"
+#include "near_field_quadrature.h"
 #include "progress.h"
 #include "source_tree.h"
 #include "surfel_cloud.h"
+#include "surfel_index.h"
+#include "surfel_irradiance.h"
 
 namespace sss {
 
 // The reference's near-field quadrature: refining it further changes B by well under 0.1 %
 // (tests/test_reference.cpp).
-inline NearFieldSettings reference_near_field() {
-  NearFieldSettings s;
-  s.quadrature.rings = 24;
-  s.quadrature.min_nodes = 8;
-  s.quadrature.max_nodes = 48;
+inline QuadratureSettings reference_quadrature() {
+  QuadratureSettings s;
+  s.rings = 24;
+  s.min_nodes = 8;
+  s.max_nodes = 48;
+  s.radial = 4;
   return s;
 }
 
 struct ReferenceSettings {
-  IlluminationSettings illumination;
+  LightMapSettings light_map;
+  int irradiance_samples = 64;  // per cell and light
+  QuadratureSettings quadrature = reference_quadrature();
   SourceTreeSettings tree;
-  NearFieldSettings near = reference_near_field();
-  // The near field's r0 in mm; 0 takes NearFarSplit::minimum_r0 of the cloud and map.
+  // The near field's r0 in mm; 0 takes NearFarSplit::minimum_r0 of the cloud.
   double r0_mm = 0.0;
   // Empty: B at every surfel. Otherwise only at these surfels (indices into the validated
   // cloud); the others are NaN. Large scans are compared on a sample of their points.
@@ -43,16 +50,13 @@ struct ReferenceSettings {
 
 struct RadianceStats {
   std::size_t surfels = 0;
-  std::size_t lit_samples = 0;
-  double texel_mm = 0.0;           // illumination-map texel of the first light
+  std::size_t lit_cells = 0;       // surfels with light, summed over the lights
+  double texel_mm = 0.0;           // light-map texel of the first light
   int map_width = 0, map_height = 0;
-  std::size_t near_nodes = 0;      // per receiver and light
+  std::size_t near_nodes = 0;      // quadrature nodes per receiver
   double split_r0_mm = 0.0;        // 0 when the near field takes the whole kernel
   double split_r1_mm = 0.0;        // the near field's reach
-  double seconds_illumination = 0, seconds_tree = 0, seconds_geometry = 0,
-         seconds_surfels = 0;
-
-  void record_sources(const IlluminationSamples& samples, std::size_t surfel_count);
+  double seconds_geometry = 0, seconds_light = 0, seconds_tree = 0, seconds_surfels = 0;
 };
 
 // Per-surfel radiance before the outgoing Fresnel factor: Lo(x, wo) = Ft(eta, wo) * B(x).
@@ -61,8 +65,8 @@ struct SurfelRadiance {
   RadianceStats stats;
 };
 
-// The light's map, its samples and the near-far split for one cloud, material and set of
-// lights: B at any surfel.
+// Everything the reference needs for one cloud, material and set of lights: B at the surfels
+// asked for.
 class ReferenceSolver {
  public:
   // The cloud must have been validated (SurfelCloud::validate); throws std::invalid_argument
@@ -71,30 +75,46 @@ class ReferenceSolver {
                   const std::vector<DirectionalLight>& lights,
                   const ReferenceSettings& settings = {});
 
-  // B (eq. 17) at surfel `index`: near field plus far field.
-  Rgb B(std::size_t index) const;
-  // The light's samples alone, summed by the source tree over the part of the kernel `window`
+  // B (eq. 17) at the k-th receiver asked for (the k-th surfel when none were named).
+  Rgb B(std::size_t k) const;
+  // The near field alone at the k-th receiver.
+  Rgb near_B(std::size_t k) const;
+  // The lit cells alone, summed by the source tree over the part of the kernel `window`
   // keeps, at a point in scene units (the far field's sum, open to tests).
   Rgb sources_B_at(const Eigen::Vector3d& scene_point, const KernelWindow& window) const;
 
+  const std::vector<std::size_t>& receivers() const { return receivers_; }
   const LocalSurfels& surfels() const { return surfels_; }
-  const IlluminationSamples& samples() const { return samples_; }
+  const std::vector<double>& cell_area() const { return area_; }
+  const LightMaps& light_maps() const { return maps_; }
+  const SurfelIrradiance& irradiance() const { return E_; }
   const NearFarSplit& split() const { return split_; }
-  const NearField& near_field() const { return *near_; }
+  const NearFieldWeights& near_weights() const { return weights_; }
   const SourceTree& tree() const;
   const RadianceStats& stats() const { return stats_; }
 
  private:
   LocalSurfels surfels_;
-  IlluminationSamples samples_;
+  std::unique_ptr<SurfelIndex> index_;
+  std::vector<double> area_;
+  LightMaps maps_;
+  SurfelIrradiance E_;
+  std::vector<Rgb> E_total_;
   NearFarSplit split_;
   Dipole dipole_;
+  std::vector<std::size_t> receivers_;
+  NearFieldWeights weights_;
+  PointSources sources_;
   SourceTreeSettings tree_settings_;
-  std::unique_ptr<NearField> near_;
   mutable std::once_flag tree_built_;
   mutable std::unique_ptr<SourceTree> tree_;
   RadianceStats stats_;
 };
+
+// The lit cells as sources of the far field: one per surfel and light with light, at the
+// surfel's point, its normal turned towards that light, a disc of its cell's area.
+PointSources cell_sources(const LocalSurfels& surfels, const std::vector<double>& area,
+                          const LightMaps& light, const SurfelIrradiance& E);
 
 SurfelRadiance render_reference(const SurfelCloud& cloud, const Material& material,
                                 const std::vector<DirectionalLight>& lights,

@@ -8,10 +8,11 @@ namespace sss {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// Texels split near a receiver: into pieces no larger than max(z_r / 2, distance / 8),
-// at most this many per side.
-constexpr int kMaxSplit = 64;
+// Patches split near a receiver: into pieces no larger than max(z_r / 2, distance / 8),
+// at most this many.
+constexpr int kMaxPieces = 4096;
 constexpr double kSplitDistanceRatio = 8.0;
+constexpr double kGoldenAngle = 2.399963229728653;
 // Deeper nodes stay leaves; bounds the traversal stack.
 constexpr int kMaxDepth = 200;
 
@@ -35,30 +36,26 @@ double expanded_term(double z, double s_tr, const Eigen::Vector3d& y0, const Eig
 
 }  // namespace
 
-SourceTree::SourceTree(const IlluminationSamples& samples, const Dipole& dipole,
+SourceTree::SourceTree(const PointSources& sources, const Dipole& dipole,
                        const SourceTreeSettings& settings)
     : dipole_(dipole), settings_(settings) {
   if (!(settings.theta >= 0.0 && settings.theta < 1.0) || settings.leaf_size < 1 ||
       !(settings.kernel_tolerance > 0.0 && settings.kernel_tolerance < 1.0))
     throw std::invalid_argument(
         "[sss::SourceTree] theta must be in [0, 1), leaf_size >= 1, kernel_tolerance in (0, 1)");
+  const std::size_t count = sources.size();
+  if (sources.normal.size() != count || sources.power.size() != count ||
+      sources.edge_u.size() != count || sources.edge_v.size() != count)
+    throw std::invalid_argument("[sss::SourceTree] source arrays differ in size");
   cutoff_ = dipole.max_support_radius(settings.kernel_tolerance);
   split_spacing_ = 0.5 * dipole.min_z_r();
-  const int n = static_cast<int>(samples.size());
+  const int n = static_cast<int>(count);
   // Copies that the build puts in tree order.
-  position_ = samples.position;
-  normal_ = samples.normal;
-  power_ = samples.power;
-  texel_u_.resize(n);
-  texel_v_.resize(n);
-  for (int k = 0; k < n; ++k) {
-    const OrthoView& map = samples.maps[samples.light[k]];
-    const Eigen::Vector3d& nk = normal_[k];
-    // A texel edge along the light, slid onto the disc's plane (grazing capped at cos 0.05).
-    const double cos_i = std::max(0.05, nk.dot(map.w));
-    texel_u_[k] = map.pixel * (map.u - nk.dot(map.u) / cos_i * map.w);
-    texel_v_[k] = map.pixel * (map.v - nk.dot(map.v) / cos_i * map.w);
-  }
+  position_ = sources.position;
+  normal_ = sources.normal;
+  power_ = sources.power;
+  edge_u_ = sources.edge_u;
+  edge_v_ = sources.edge_v;
   if (n > 0) {
     nodes_.reserve(2 * static_cast<std::size_t>(n) / std::max(1, settings.leaf_size) + 2);
     build(0, n, 0);
@@ -126,8 +123,8 @@ int SourceTree::build(int first, int last, int depth) {
     permute(position_);
     permute(normal_);
     permute(power_);
-    permute(texel_u_);
-    permute(texel_v_);
+    permute(edge_u_);
+    permute(edge_v_);
     const int left = build(first, mid, depth + 1);
     const int right = build(mid, last, depth + 1);
     nodes_[index].left = left;
@@ -166,23 +163,26 @@ void SourceTree::add_sample(int k, const Eigen::Vector3d& x, const KernelWindow&
   const Eigen::Vector3d& n = normal_[k];
   const double distance = (p - x).norm();
   const double piece = std::max(split_spacing_, distance / kSplitDistanceRatio);
-  const double texel = std::max(texel_u_[k].norm(), texel_v_[k].norm());
-  const int split = texel > piece ? std::min(kMaxSplit, static_cast<int>(std::ceil(texel / piece)))
-                                  : 1;
-  const double share = 1.0 / (static_cast<double>(split) * split);
-  for (int b = 0; b < split; ++b) {
-    for (int a = 0; a < split; ++a) {
-      const Eigen::Vector3d q = split == 1 ? p
-                                           : Eigen::Vector3d(p + ((a + 0.5) / split - 0.5) * texel_u_[k] +
-                                                             ((b + 0.5) / split - 0.5) * texel_v_[k]);
-      const double w = share * window.weight((q - x).norm());
-      if (w == 0.0) continue;
-      for (int c = 0; c < 3; ++c) {
-        const DipoleChannel& ch = dipole_.channel[c];
-        const double d_r = (q - ch.z_r * n - x).norm();
-        const double d_v = (q + ch.z_v * n - x).norm();
-        sum[c] += w * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
-      }
+  const double radius = edge_u_[k].norm();  // the patch is a disc of this radius
+  // Pieces of about piece^2 each, spread evenly over the disc (a sunflower pattern).
+  const int pieces =
+      radius > 0.5 * piece
+          ? std::min(kMaxPieces, static_cast<int>(std::ceil(kPi * radius * radius / (piece * piece))))
+          : 1;
+  const Eigen::Vector3d u = radius > 0.0 ? Eigen::Vector3d(edge_u_[k] / radius) : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d v = radius > 0.0 ? Eigen::Vector3d(edge_v_[k] / radius) : Eigen::Vector3d::Zero();
+  const double share = 1.0 / pieces;
+  for (int s = 0; s < pieces; ++s) {
+    const double rho = pieces == 1 ? 0.0 : radius * std::sqrt((s + 0.5) / pieces);
+    const double angle = kGoldenAngle * s;
+    const Eigen::Vector3d q = p + rho * (std::cos(angle) * u + std::sin(angle) * v);
+    const double w = share * window.weight((q - x).norm());
+    if (w == 0.0) continue;
+    for (int c = 0; c < 3; ++c) {
+      const DipoleChannel& ch = dipole_.channel[c];
+      const double d_r = (q - ch.z_r * n - x).norm();
+      const double d_v = (q + ch.z_v * n - x).norm();
+      sum[c] += w * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
     }
   }
 }

@@ -1,7 +1,7 @@
-// Hierarchical sum of eq. 16/17 over the lit source elements: a binary tree over the samples,
+// Hierarchical sum of eq. 16/17 over lit source elements: a binary tree over the sources,
 // whose far nodes are summed by a second-order expansion of the dipole around each node's
-// centroid (a treecode), and whose near leaves are evaluated sample by sample, splitting a
-// sample's texel when it is coarser than the kernel's local scale.
+// centroid (a treecode), and whose near leaves are evaluated source by source, splitting a
+// source's patch when it is coarser than the kernel's local scale there.
 #pragma once
 
 #include <Eigen/Core>
@@ -9,10 +9,21 @@
 #include <vector>
 
 #include "dipole.h"
-#include "illumination.h"
 #include "kernel_window.h"
+#include "material.h"
 
 namespace sss {
+
+// Source elements: patches of surface, each a disc around its point spanned by the
+// orthogonal tangents edge_u and edge_v, whose length is the disc's radius, lit with power
+// E dA per channel.
+struct PointSources {
+  std::vector<Eigen::Vector3d> position;  // local mm
+  std::vector<Eigen::Vector3d> normal;    // unit, out of the material
+  std::vector<Rgb> power;                 // E dA
+  std::vector<Eigen::Vector3d> edge_u, edge_v;
+  std::size_t size() const { return position.size(); }
+};
 
 struct SourceTreeSettings {
   // A node of radius S at distance D is summed as a whole when S < theta D; 0 sums every sample.
@@ -25,8 +36,8 @@ struct SourceTreeSettings {
 
 class SourceTree {
  public:
-  SourceTree(const IlluminationSamples& samples, const Dipole& dipole,
-             const SourceTreeSettings& settings);
+  // Throws std::invalid_argument for a bad setting or arrays of different sizes.
+  SourceTree(const PointSources& sources, const Dipole& dipole, const SourceTreeSettings& settings);
 
   // B(x) = 1/pi Sum E dA Rd(x_i, x) (eq. 17) over the part of the kernel the window keeps.
   Rgb B(const Eigen::Vector3d& x, const KernelWindow& window = KernelWindow::all()) const;
@@ -56,7 +67,7 @@ class SourceTree {
 
   std::vector<Eigen::Vector3d> position_, normal_;
   std::vector<Rgb> power_;
-  std::vector<Eigen::Vector3d> texel_u_, texel_v_;  // a texel's edges on its disc's plane
+  std::vector<Eigen::Vector3d> edge_u_, edge_v_;  // a source patch's tangents (its radius long)
   std::vector<Node> nodes_;
   Dipole dipole_;
   SourceTreeSettings settings_;

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "illumination.h"
+#include "light_map.h"
 #include "material.h"
 #include "surfel_cloud.h"
 

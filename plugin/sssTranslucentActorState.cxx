@@ -491,7 +491,7 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
     const double texel =
       std::max(settings.texel_per_z_r * g.dipole->min_z_r(), extent / settings.max_map_size);
     g.split = NearFarSplit::choose(
-      *g.dipole, NearFarSplit::minimum_r0(g.local.radius, texel), kSupportFraction);
+      *g.dipole, std::max(NearFarSplit::minimum_r0(g.local.radius), 2.0 * texel), kSupportFraction);
     QuadratureSettings quadrature;
     quadrature.rings = settings.near_rings;
     quadrature.min_nodes = std::min(4, settings.near_nodes);

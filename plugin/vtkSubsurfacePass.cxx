@@ -156,6 +156,8 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   settings.opening_angle = this->OpeningAngle;
   settings.max_group_diffusion_lengths = this->MaxGroupDiffusionLengths;
   settings.near_field_cells = this->NearFieldCells;
+  settings.near_rings = this->NearFieldRings;
+  settings.near_nodes = this->NearFieldNodes;
   settings.grid_level = this->GridLevel;
   settings.texel_per_z_r = this->TexelPerZr;
   settings.max_map_size = this->MaxMapSize;
@@ -552,6 +554,8 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KernelStrategy: " << this->KernelStrategy << "\n";
   os << indent << "OpeningAngle: " << this->OpeningAngle << "\n";
   os << indent << "MaxGroupDiffusionLengths: " << this->MaxGroupDiffusionLengths << "\n";
+  os << indent << "NearFieldRings: " << this->NearFieldRings << "\n";
+  os << indent << "NearFieldNodes: " << this->NearFieldNodes << "\n";
   os << indent << "NearFieldCells: " << this->NearFieldCells << "\n";
   os << indent << "GridLevel: " << this->GridLevel << "\n";
   os << indent << "TexelPerZr: " << this->TexelPerZr << "\n";

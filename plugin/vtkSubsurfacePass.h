@@ -83,6 +83,18 @@ public:
 
   ///@{
   /**
+   * NEAR_FAR: the near field's quadrature on each surfel's local surface: this many rings,
+   * each holding an equal share of the kernel's near integral (default 8), with at most
+   * NearFieldNodes nodes on each (default 8; at least 4).
+   */
+  vtkSetClampMacro(NearFieldRings, int, 1, 32);
+  vtkGetMacro(NearFieldRings, int);
+  vtkSetClampMacro(NearFieldNodes, int, 1, 64);
+  vtkGetMacro(NearFieldNodes, int);
+  ///@}
+
+  ///@{
+  /**
    * GRID_NEAR: the kernel is split between r0 = NearFieldCells grid spacings and 2 r0
    * (default 2).
    */
@@ -197,6 +209,8 @@ protected:
   double OpeningAngle = 2.0;
   double MaxGroupDiffusionLengths = 1000.0;
   double NearFieldCells = 2.0;
+  int NearFieldRings = 8;
+  int NearFieldNodes = 8;
   int GridLevel = 0;
   double TexelPerZr = 0.25;
   int MaxMapSize = 512;

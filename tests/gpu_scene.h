@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "illumination.h"
+#include "light_map.h"
 #include "surfel_cloud.h"
 
 namespace sss::test {

@@ -95,7 +95,6 @@ TEST(GpuDefaults, AtLeastAsAccurateAsThePaperOnTheBunny) {
     const Material material = Material::preset(name, 1.3, 1000.0);
     const SurfelRadiance reference = cached_reference(SSS_TEST_REFERENCE_CACHE, cloud, material, lights);
     GpuScene scene(cloud, material, lights);
-    scene.use_pass_defaults();
     const ErrorStats defaults = compare_radiance(scene.render_B(), reference.B);
     scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
     const ErrorStats paper = compare_radiance(scene.render_B(), reference.B);

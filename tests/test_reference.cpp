@@ -43,7 +43,6 @@ TEST_P(SphereClosedForm, FiveMetreSphereMeetsTheLocalClosedForm) {
   const Eigen::Vector3d light(0, 0, 1);
   ReferenceSettings settings;
   settings.receivers = sample_of(sphere, 2000, 7, light, 0.2);
-  settings.illumination.max_map_size = 2048;  // 5 mm texels; the tree splits them near receivers
   const SurfelRadiance r = render_reference(sphere, material, {{light, 1.0}}, settings);
   std::vector<Rgb> got, expected;
   for (std::size_t i : settings.receivers) {
@@ -151,7 +150,8 @@ INSTANTIATE_TEST_SUITE_P(Materials, SamplingInvariance,
                          [](const auto& info) { return std::string(info.param); });
 
 // Refining the reference's near-field quadrature (twice the rings, twice the nodes) and its
-// sources (texels of z_r / 8) moves B by far less than the 0.5 % it is used to judge.
+// light (texels of a sixteenth of a disc radius, 128 samples per cell) moves B by far less
+// than the 0.5 % it is used to judge.
 TEST(ReferenceConvergence, RefiningQuadratureAndTexelsChangesLittle) {
   const SurfelCloud torus = make_torus(20.0, 6.0, 0.6);
   for (const char* name : {"marble", "ketchup"}) {
@@ -159,12 +159,11 @@ TEST(ReferenceConvergence, RefiningQuadratureAndTexelsChangesLittle) {
     const std::vector<DirectionalLight> light{{Eigen::Vector3d(0.2, 0.5, 1.0), 1.0}};
     ReferenceSettings base, finer_nodes, finer_texels;
     base.receivers = finer_nodes.receivers = finer_texels.receivers = sample_of(torus, 1500, 5);
-    finer_nodes.near.quadrature.rings *= 2;
-    finer_nodes.near.quadrature.min_nodes *= 2;
-    finer_nodes.near.quadrature.max_nodes *= 2;
-    finer_texels.illumination.texel_per_z_r *= 0.5;
-    finer_texels.r0_mm = base.r0_mm = finer_nodes.r0_mm =
-        NearFarSplit::minimum_r0(torus.radius, 0.25 * Dipole(material).min_z_r());
+    finer_nodes.quadrature.rings *= 2;
+    finer_nodes.quadrature.min_nodes *= 2;
+    finer_nodes.quadrature.max_nodes *= 2;
+    finer_texels.light_map.texel_per_radius *= 0.5;
+    finer_texels.irradiance_samples *= 2;
     auto at_receivers = [&](const ReferenceSettings& s) {
       const SurfelRadiance r = render_reference(torus, material, light, s);
       std::vector<Rgb> B;
@@ -175,7 +174,7 @@ TEST(ReferenceConvergence, RefiningQuadratureAndTexelsChangesLittle) {
     const ErrorStats nodes = compare_radiance(at_receivers(finer_nodes), a);
     const ErrorStats texels = compare_radiance(at_receivers(finer_texels), a);
     std::printf("[ reference convergence ] %s torus (%zu points, %.2f mm apart): twice the "
-                "quadrature %s; half the texel %s\n", name, torus.size(), 0.6, nodes.summary().c_str(),
+                "quadrature %s; half the texel, twice the samples %s\n", name, torus.size(), 0.6, nodes.summary().c_str(),
                 texels.summary().c_str());
     EXPECT_LT(nodes.mean, 0.005) << name;
     EXPECT_LT(texels.mean, 0.005) << name;

@@ -15,16 +15,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A marble sphere of 3 mm (718 surfels) lit from one side, with texels of z_r: a reference in
-// about 0.1 s.
+// A marble sphere of 3 mm (718 surfels) lit from one side, with a small light map and few
+// samples per cell: a reference in about 0.1 s.
 struct Scene {
   SurfelCloud cloud = make_sphere(3.0, 0.4);
   Material material = Material::preset("marble");
   std::vector<DirectionalLight> lights{{Eigen::Vector3d(0.3, 0.2, 1.0), 1.0}};
   ReferenceSettings settings;
   Scene() {
-    settings.illumination.texel_per_z_r = 1.0;
-    settings.illumination.max_map_size = 128;
+    settings.light_map.texel_per_radius = 0.5;
+    settings.light_map.max_map_size = 128;
+    settings.irradiance_samples = 16;
   }
   ReferenceKey key() const { return ReferenceKey::of(cloud, material, lights, settings); }
 };
@@ -45,7 +46,7 @@ void expect_same(const SurfelRadiance& a, const SurfelRadiance& b) {
   for (std::size_t i = 0; i < a.B.size(); ++i)
     for (int c = 0; c < 3; ++c) ASSERT_EQ(a.B[i][c], b.B[i][c]) << "surfel " << i;
   EXPECT_EQ(a.stats.surfels, b.stats.surfels);
-  EXPECT_EQ(a.stats.lit_samples, b.stats.lit_samples);
+  EXPECT_EQ(a.stats.lit_cells, b.stats.lit_cells);
   EXPECT_EQ(a.stats.texel_mm, b.stats.texel_mm);
   EXPECT_EQ(a.stats.map_width, b.stats.map_width);
   EXPECT_EQ(a.stats.map_height, b.stats.map_height);
@@ -63,7 +64,7 @@ TEST_F(ReferenceCache, HitReturnsExactlyTheStoredValuesWithoutRecomputing) {
   EXPECT_TRUE(first.stored) << first.message;
   EXPECT_GT(progress_calls, 0u);  // the convenience function passes the progress through
   ASSERT_EQ(computed.B.size(), scene.cloud.size());
-  EXPECT_GT(computed.stats.lit_samples, 0u);
+  EXPECT_GT(computed.stats.lit_cells, 0u);
 
   progress_calls = 0;
   ReferenceCacheStatus second;
@@ -103,8 +104,12 @@ TEST_F(ReferenceCache, ChangingAnyKeyFieldIsAMiss) {
       {"one point's normal", [](Scene& s) { s.cloud.normals[17] = -s.cloud.normals[17]; }},
       {"albedo", [](Scene& s) { s.cloud.albedo.assign(s.cloud.size(), Rgb{1, 1, 1}); }},
       {"radius", [](Scene& s) { s.cloud.radius *= 1.5; }},
-      {"texel per z_r", [](Scene& s) { s.settings.illumination.texel_per_z_r = 0.5; }},
-      {"largest map", [](Scene& s) { s.settings.illumination.max_map_size = 256; }},
+      {"texel per radius", [](Scene& s) { s.settings.light_map.texel_per_radius = 0.25; }},
+      {"largest map", [](Scene& s) { s.settings.light_map.max_map_size = 256; }},
+      {"samples per cell", [](Scene& s) { s.settings.irradiance_samples = 8; }},
+      {"quadrature rings", [](Scene& s) { s.settings.quadrature.rings = 12; }},
+      {"near-field r0", [](Scene& s) { s.settings.r0_mm = 0.5; }},
+      {"receivers", [](Scene& s) { s.settings.receivers = {1, 2, 3}; }},
       {"tree opening", [](Scene& s) { s.settings.tree.theta = 0.2; }},
       {"tree leaf size", [](Scene& s) { s.settings.tree.leaf_size = 16; }},
       {"kernel tolerance", [](Scene& s) { s.settings.tree.kernel_tolerance = 1e-6; }},

@@ -20,12 +20,12 @@ SurfelCloud load_or_skip(const char* name) {
 }
 
 void print_stats(const char* label, const RadianceStats& s) {
-  std::printf("[ scan ] %s: %zu surfels, %zu lit samples, texel %.3f mm (%dx%d map), "
+  std::printf("[ scan ] %s: %zu surfels, %zu lit cells, texel %.3f mm (%dx%d map), "
               "near field to %.2f mm (%zu nodes), far field from %.2f mm; %.1f s geometry + "
-              "%.1f s sources + %.1f s tree + %.1f s surfels\n",
-              label, s.surfels, s.lit_samples, s.texel_mm, s.map_width, s.map_height,
+              "%.1f s light + %.1f s tree + %.1f s surfels\n",
+              label, s.surfels, s.lit_cells, s.texel_mm, s.map_width, s.map_height,
               s.split_r1_mm, s.near_nodes, s.split_r0_mm, s.seconds_geometry,
-              s.seconds_illumination, s.seconds_tree, s.seconds_surfels);
+              s.seconds_light, s.seconds_tree, s.seconds_surfels);
 }
 
 // Halving the default source spacing (texels of z_r / 8 instead of z_r / 4, four times the
@@ -35,7 +35,8 @@ TEST(Scans, ReferenceConvergesOnTheBunny) {
   if (bunny.empty()) GTEST_SKIP() << "../shared/data/stanford_bunny.ply is absent";
   const Material marble = Material::preset("marble", 1.3, 1000.0);
   ReferenceSettings coarse, fine;
-  fine.illumination.texel_per_z_r = 0.5 * coarse.illumination.texel_per_z_r;
+  fine.light_map.texel_per_radius = 0.5 * coarse.light_map.texel_per_radius;
+  fine.irradiance_samples = 2 * coarse.irradiance_samples;
   const SurfelRadiance a = render_reference(bunny, marble, kLight, coarse);
   const SurfelRadiance b = render_reference(bunny, marble, kLight, fine);
   print_stats("bunny reference, default texel", a.stats);

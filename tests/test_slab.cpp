@@ -29,8 +29,10 @@ void expect_closed_form(const Material& material, double spacing,
   const double slab_radius = dipole.max_support_radius(1e-3) + 2 * spacing;
   const SurfelCloud slab = make_slab(slab_radius, spacing);
   const double E = 2.0;
-  const ReferenceSolver solver(slab, material, {{Eigen::Vector3d(0, 0, 1), E}}, settings);
-  const Rgb B = solver.B(centre_of(slab));
+  ReferenceSettings at_centre = settings;
+  at_centre.receivers = {centre_of(slab)};
+  const ReferenceSolver solver(slab, material, {{Eigen::Vector3d(0, 0, 1), E}}, at_centre);
+  const Rgb B = solver.B(0);
   for (int c = 0; c < 3; ++c) {
     const double Ft0 = fresnel_transmittance(material.eta[c], 1.0);
     const double expected = Ft0 * E * Ft0 * dipole.channel[c].total_diffuse_reflectance() / M_PI;
@@ -48,11 +50,7 @@ TEST_P(Slab, CentreMatchesClosedForm) {
   const Material material = Material::preset(name, 1.3);
   const Dipole dipole(material);
   const double z_r = std::max({dipole.channel[0].z_r, dipole.channel[1].z_r, dipole.channel[2].z_r});
-  // Maps of at most 2048 texels a side keep the wide slabs fast; where that makes texels
-  // coarser than z_r / 4, the tree splits them near the receiver (SlabCoarseMap below).
-  ReferenceSettings settings;
-  settings.illumination.max_map_size = 2048;
-  expect_closed_form(material, std::get<1>(GetParam()) * z_r, settings, name);
+  expect_closed_form(material, std::get<1>(GetParam()) * z_r, ReferenceSettings{}, name);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -64,15 +62,13 @@ INSTANTIATE_TEST_SUITE_P(
              std::to_string(static_cast<int>(100 * std::get<1>(info.param))) + "pct_z_r";
     });
 
-// A map too small for texels finer than z_r: each texel's area is then integrated by splitting
-// it near the receiver, and the closed form still holds.
-TEST(SlabCoarseMap, TexelsOfFourZrStillMeetClosedForm) {
+// A coarse light map (texels of a whole disc radius) changes nothing on a lit plane: the
+// irradiance is each cell's own, the map only says which points the light reaches.
+TEST(SlabCoarseMap, TexelsOfADiscRadiusStillMeetClosedForm) {
   const Material material = Material::preset("marble", 1.5);
-  const Dipole dipole(material);
-  const double slab_radius = dipole.max_support_radius(1e-3);
   ReferenceSettings coarse;
-  coarse.illumination.max_map_size = static_cast<int>(2 * slab_radius / (4 * dipole.min_z_r()));
-  expect_closed_form(material, dipole.min_z_r(), coarse, "marble coarse map");
+  coarse.light_map.texel_per_radius = 1.0;
+  expect_closed_form(material, Dipole(material).min_z_r(), coarse, "marble coarse map");
 }
 
 }  // namespace

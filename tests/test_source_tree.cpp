@@ -14,8 +14,11 @@ TEST(SourceTree, ExpansionAgreesWithDirectSum) {
   const std::vector<DirectionalLight> light{{Eigen::Vector3d(1, 1, 2), 1.0}};
   ReferenceSettings direct;
   direct.tree.theta = 0.0;
+  direct.receivers = {0};
+  ReferenceSettings fast_settings;
+  fast_settings.receivers = {0};
   const ReferenceSolver exact(sphere, material, light, direct);
-  const ReferenceSolver fast(sphere, material, light);
+  const ReferenceSolver fast(sphere, material, light, fast_settings);
   double worst = 0.0, sum = 0.0;
   int count = 0;
   for (std::size_t i = 0; i < sphere.size(); i += 97) {
@@ -38,7 +41,9 @@ TEST(SourceTree, ExpansionAgreesWithDirectSum) {
 TEST(SourceTree, NearAndFarPartsAddUpToTheWhole) {
   const SurfelCloud torus = make_torus(20.0, 6.0, 0.5);
   const Material material = Material::preset("marble");
-  const ReferenceSolver solver(torus, material, {{Eigen::Vector3d(0, 1, 1), 1.0}});
+  ReferenceSettings one;
+  one.receivers = {0};
+  const ReferenceSolver solver(torus, material, {{Eigen::Vector3d(0, 1, 1), 1.0}}, one);
   for (std::size_t i = 0; i < torus.size(); i += 211) {
     const Rgb all = solver.sources_B_at(torus.positions[i], KernelWindow::all());
     const Rgb near = solver.sources_B_at(torus.positions[i], KernelWindow::near(2.0, 4.0));
