@@ -38,11 +38,37 @@ Rgb NearFieldWeights::B(std::size_t row, const std::vector<Rgb>& E) const {
   return sum;
 }
 
+// Eq. 3 over a cell of area `area` around p (normal n) at the receiver x, with the fraction
+// `keep(r)` of it kept, summed over points spread evenly over a disc of that area.
+template <typename Keep>
+Rgb cell_kernel(const Dipole& dipole, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                double area, const Eigen::Vector3d& x, const Keep& keep) {
+  constexpr int kPoints = 32;
+  constexpr double kGoldenAngle = 2.399963229728653;
+  Eigen::Vector3d t1, t2;
+  tangent_frame(n, t1, t2);
+  const double radius = std::sqrt(area / kPi);
+  Rgb sum{0.0, 0.0, 0.0};
+  for (int s = 0; s < kPoints; ++s) {
+    const double rho = radius * std::sqrt((s + 0.5) / kPoints);
+    const double angle = kGoldenAngle * s;
+    const Eigen::Vector3d q = p + rho * (std::cos(angle) * t1 + std::sin(angle) * t2);
+    const double k = keep((q - x).norm());
+    if (k <= 0.0) continue;
+    for (int c = 0; c < 3; ++c) {
+      const DipoleChannel& ch = dipole.channel[c];
+      sum[c] += k * ch.Rd_from_distances((q - ch.z_r * n - x).norm(), (q + ch.z_v * n - x).norm());
+    }
+  }
+  for (double& v : sum) v *= area / kPoints;
+  return sum;
+}
+
 NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vector<double>& area,
                                     const SurfelIndex& index, const Dipole& dipole,
                                     const NearFieldQuadrature& quadrature,
                                     const KernelWindow& window,
-                                    const std::vector<std::size_t>& receivers) {
+                                    const std::vector<std::size_t>& receivers, bool whole_cells) {
   const std::size_t n = receivers.empty() ? surfels.size() : receivers.size();
   std::vector<Row> rows(n);
   const double r = surfels.radius;
@@ -50,7 +76,7 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vect
   const double kappa_limit = 1.0 / reach;
   const long count = static_cast<long>(n);
 #pragma omp parallel default(none) shared(surfels, area, index, dipole, quadrature, window, \
-                                          receivers, rows, count, r, reach, kappa_limit)
+                                          receivers, rows, count, r, reach, kappa_limit, whole_cells)
   {
     std::vector<std::size_t> near, other;
     std::vector<std::pair<double, std::size_t>> same;  // distance from the receiver, index
@@ -101,27 +127,36 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vect
                 owner = j;
               }
             }
-            if (owner != std::numeric_limits<std::size_t>::max())
+            if (owner != std::numeric_limits<std::size_t>::max() &&
+                !(whole_cells && (surfels.positions[owner] - p).norm() >= reach))
               row.add(static_cast<std::uint32_t>(owner), point);
           }
         }
       }
+      const auto near_part = [&](double d) { return window.weight(d); };
+      const auto far_part = [&](double d) { return 1.0 - window.weight(d); };
       for (std::size_t j : other) {
+        if (!(area[j] > 0.0)) continue;
         const Eigen::Vector3d d = p - surfels.positions[j];
         // The other surface's material lies on its side away from the receiver.
         const Eigen::Vector3d nj = surfels.normals[j].dot(d) > 0.0
                                        ? Eigen::Vector3d(-surfels.normals[j])
                                        : surfels.normals[j];
-        const double keep = window.weight(d.norm());
-        if (keep <= 0.0 || !(area[j] > 0.0)) continue;
-        Rgb w;
-        for (int c = 0; c < 3; ++c) {
-          const DipoleChannel& ch = dipole.channel[c];
-          w[c] = area[j] * keep *
-                 ch.Rd_from_distances((surfels.positions[j] - ch.z_r * nj - p).norm(),
-                                      (surfels.positions[j] + ch.z_v * nj - p).norm());
-        }
+        const Rgb w = whole_cells
+                          ? cell_kernel(dipole, surfels.positions[j], nj, area[j], p,
+                                        [](double) { return 1.0; })
+                          : cell_kernel(dipole, surfels.positions[j], nj, area[j], p, near_part);
         row.add(static_cast<std::uint32_t>(j), w);
+      }
+      if (whole_cells) {
+        for (const auto& [d, j] : same) {
+          if (d >= reach || !(area[j] > 0.0)) continue;
+          const Eigen::Vector3d nj = surfels.normals[j].dot(normal) < 0.0
+                                         ? Eigen::Vector3d(-surfels.normals[j])
+                                         : surfels.normals[j];
+          row.add(static_cast<std::uint32_t>(j),
+                  cell_kernel(dipole, surfels.positions[j], nj, area[j], p, far_part));
+        }
       }
     }
   }

@@ -5,8 +5,12 @@
 // over the part of the receiver's local surface (local_surface.h) that surfel j's cell covers:
 // each quadrature node on the receiver's osculating paraboloid belongs to the nearest surfel of
 // that surface within a disc radius of it, or to none (an open edge, a hole). Surfels of other
-// surfaces within the near reach (the far side of a thin part) weigh in as point sources of
-// their cell's area, w_oj = a_j Rd(x_j, n_j -> x_o) times the near part of the window.
+// surfaces within the near reach (the far side of a thin part) weigh in with the near part of
+// eq. 3 summed over 32 points of their cell (a disc of its area).
+// With `whole_cells` (the GPU's table) every cell whose surfel lies within the reach weighs in
+// with all of its kernel: the near part as above plus the far part over 32 points of the
+// cell, and nodes owned by cells beyond the reach are left to the far field, which then sums
+// whole cells beyond the reach and no window (far_field.glsl).
 // Computed when the geometry or the material changes; a light move only re-weights it by the
 // new E. Memory: one entry (source index and three weights) per neighbour in reach.
 #pragma once
@@ -41,6 +45,7 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vect
                                     const SurfelIndex& index, const Dipole& dipole,
                                     const NearFieldQuadrature& quadrature,
                                     const KernelWindow& window,
-                                    const std::vector<std::size_t>& receivers = {});
+                                    const std::vector<std::size_t>& receivers = {},
+                                    bool whole_cells = false);
 
 }  // namespace sss

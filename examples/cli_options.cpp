@@ -1,5 +1,8 @@
 #include "cli_options.h"
 
+#include <vtkNew.h>
+#include <vtkSubsurfacePass.h>
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -33,6 +36,16 @@ std::vector<double> numbers(const std::string& flag, const std::string& text, st
   return values;
 }
 
+int whole(const std::string& flag, const std::string& text, int lo, int hi) {
+  const double v = number(flag, text);
+  if (v < lo || v > hi || v != std::floor(v)) {
+    std::ostringstream msg;
+    msg << flag << ": needs a whole number from " << lo << " to " << hi;
+    throw std::invalid_argument(msg.str());
+  }
+  return static_cast<int>(v);
+}
+
 Eigen::Vector3d direction(const std::string& flag, const std::string& text) {
   const auto v = numbers(flag, text, 3);
   const Eigen::Vector3d d(v[0], v[1], v[2]);
@@ -43,8 +56,10 @@ Eigen::Vector3d direction(const std::string& flag, const std::string& text) {
 }  // namespace
 
 std::string usage() {
-  return R"(sss_render: renders a point cloud as a translucent material (dipole diffusion, Jensen 2001;
-real-time method of Oda et al. 2005) offscreen, to PNG (tone-mapped sRGB) and optionally
+  vtkNew<vtkSubsurfacePass> pass;  // its defaults are the defaults below
+  std::ostringstream text;
+  text << R"(sss_render: renders a point cloud as a translucent material (dipole diffusion, Jensen 2001;
+real-time method after Oda et al. 2005) offscreen, to PNG (tone-mapped sRGB) and optionally
 linear radiance (PFM), per-point radiance (PLY) and JSON stats.
 
 usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
@@ -69,25 +84,25 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --up X,Y,Z                camera up (default 0,0,1)
   --ortho                   orthographic camera (default perspective, 30 degree view angle)
   --size WxH                image size in pixels (default 512x512)
-  --method grid|reference   grid (default): the real-time GPU method; reference: the CPU
-                            per-point evaluation of eq. 16 (progress on stderr), shown the
-                            same way
+  --method gpu|reference    gpu (default): the real-time method; reference: the CPU
+                            evaluation of the same model at full precision (progress on
+                            stderr), shown the same way
   --backend osmesa|egl|x    OpenGL context: OSMesa or EGL surfaceless (no display needed;
                             default egl) or an X window (needs DISPLAY)
-  --strategy NAME           GPU kernel: grid (default; pyramid walk at the virtual points,
-                            moved onto the surface), surfel (pyramid walk at every surfel),
-                            grid-near (far part on the virtual grid, near part per surfel),
-                            paper (49 Gaussian taps in a 40x40 window of a 512x512 map at
-                            the grid points). The defaults cost what the paper's setting
-                            costs at 15-30 % mean error; under 1 %: --strategy surfel
-                            --max-map 4096 --opening-angle 0.5 --group-lengths 2
-  --grid-level K            virtual grid of 2^K points per axis (default 0: automatic, at
-                            most 16384 kept points)
-  --max-map N               largest illumination-map side, texels (default 512)
-  --opening-angle V         pyramid walk accuracy, smaller is finer, at most 2 (default 2)
-  --group-lengths V         pyramid walk: largest source group, in diffusion lengths 1/s_tr
-                            of the channels that still matter (default 1000: no limit)
-  --texel-per-zr V          illumination-map texel over the smallest z_r (default 0.25)
+  --strategy NAME           near-far (default): each surfel's cell lit through the light
+                            map, near field from a table of weights, far field by a walk of
+                            the lit cells; paper: 49 Gaussian taps in a 40x40 window of a
+                            512x512 map at 64^3 grid points (the 2005 paper's method)
+  --max-map N               largest light-map side, texels (default )" << pass->GetMaxMapSize() << R"()
+  --texel-per-radius V      light-map texel over the disc radius (default )" << pass->GetTexelPerRadius() << R"()
+  --cell-samples N          points per surfel cell whose light the map is asked for
+                            (default )" << pass->GetCellSamples() << R"()
+  --opening-angle V         far-field walk: a group of cells counts as one source below this
+                            size over distance, smaller is finer, 0.05 to 2 (default )" << pass->GetOpeningAngle() << R"()
+  --group-lengths V         far-field walk: largest source group, in diffusion lengths 1/s_tr
+                            of the channels that still matter (default )" << pass->GetMaxGroupDiffusionLengths() << R"()
+  --near-rings N            near-field table: rings of its quadrature (default )" << pass->GetNearFieldRings() << R"()
+  --grid-level K            paper: 2^K grid points per axis (default 0: the paper's 64)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
                             the 99.5th percentile of the visible Lo maps to white)
   --radius-scale F          disc radius over the input's mean point spacing (default 1.5:
@@ -99,6 +114,18 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
                             (vertex cells, point size 2) of the same cloud (default 0)
   --help                    this text
 )";
+  return text.str();
+}
+
+void apply_pass_settings(const Options& o, vtkSubsurfacePass* pass) {
+  if (o.strategy) pass->SetKernelStrategyByName(*o.strategy);
+  if (o.grid_level) pass->SetGridLevel(*o.grid_level);
+  if (o.max_map_size) pass->SetMaxMapSize(*o.max_map_size);
+  if (o.texel_per_radius) pass->SetTexelPerRadius(*o.texel_per_radius);
+  if (o.cell_samples) pass->SetCellSamples(*o.cell_samples);
+  if (o.opening_angle) pass->SetOpeningAngle(*o.opening_angle);
+  if (o.group_diffusion_lengths) pass->SetMaxGroupDiffusionLengths(*o.group_diffusion_lengths);
+  if (o.near_rings) pass->SetNearFieldRings(*o.near_rings);
 }
 
 Options parse(int argc, char** argv) {
@@ -150,35 +177,36 @@ Options parse(int argc, char** argv) {
       o.height = static_cast<int>(h);
     } else if (flag == "--method") {
       o.method = value();
-      if (o.method != "reference" && o.method != "grid")
-        throw std::invalid_argument("--method: '" + o.method + "' is not reference or grid");
+      if (o.method != "reference" && o.method != "gpu")
+        throw std::invalid_argument("--method: '" + o.method + "' is not gpu or reference");
     } else if (flag == "--backend") {
       o.backend = value();
       if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "x")
         throw std::invalid_argument("--backend: '" + o.backend + "' is not osmesa, egl or x");
     } else if (flag == "--strategy") {
       o.strategy = value();
-      if (o.strategy != "grid-near" && o.strategy != "surfel" && o.strategy != "grid" &&
-          o.strategy != "paper")
-        throw std::invalid_argument("--strategy: '" + o.strategy +
-                                    "' is not grid-near, surfel, grid or paper");
+      vtkNew<vtkSubsurfacePass> probe;
+      if (!probe->SetKernelStrategyByName(*o.strategy))
+        throw std::invalid_argument("--strategy: '" + *o.strategy + "' is not near-far or paper");
     } else if (flag == "--bake") {
       o.bake_ply = value();
     } else if (flag == "--ortho") {
       o.ortho = true;
     } else if (flag == "--grid-level") {
-      const double k = number(flag, value());
-      if (k < 0 || k > 10 || k != std::floor(k))
-        throw std::invalid_argument("--grid-level: needs a whole number from 0 to 10");
-      o.grid_level = static_cast<int>(k);
+      o.grid_level = whole(flag, value(), 0, 10);
     } else if (flag == "--max-map") {
-      const double n = number(flag, value());
-      if (n < 16 || n > 16384 || n != std::floor(n))
-        throw std::invalid_argument("--max-map: needs a whole number from 16 to 16384");
-      o.max_map_size = static_cast<int>(n);
+      o.max_map_size = whole(flag, value(), 16, 16384);
+    } else if (flag == "--cell-samples") {
+      o.cell_samples = whole(flag, value(), 1, 256);
+    } else if (flag == "--near-rings") {
+      o.near_rings = whole(flag, value(), 1, 64);
+    } else if (flag == "--texel-per-radius") {
+      o.texel_per_radius = number(flag, value());
+      if (*o.texel_per_radius < 0.01 || *o.texel_per_radius > 16)
+        throw std::invalid_argument("--texel-per-radius: needs a value from 0.01 to 16");
     } else if (flag == "--opening-angle") {
       o.opening_angle = number(flag, value());
-      if (o.opening_angle < 0.05 || o.opening_angle > 2.0)
+      if (*o.opening_angle < 0.05 || *o.opening_angle > 2.0)
         throw std::invalid_argument("--opening-angle: needs a value from 0.05 to 2");
     } else if (flag == "--radius-scale") {
       o.radius_scale = number(flag, value());
@@ -196,13 +224,11 @@ Options parse(int argc, char** argv) {
       o.frames = static_cast<int>(n);
     } else if (flag == "--group-lengths") {
       o.group_diffusion_lengths = number(flag, value());
-      if (o.group_diffusion_lengths < 0.1)
+      if (*o.group_diffusion_lengths < 0.1)
         throw std::invalid_argument("--group-lengths: needs a value of at least 0.1");
     } else if (flag == "--exposure") {
       o.exposure = number(flag, value());
       if (o.exposure < 0) throw std::invalid_argument("--exposure: must be >= 0");
-    } else if (flag == "--texel-per-zr") {
-      o.texel_per_z_r = number(flag, value());
     } else if (!flag.empty() && flag[0] == '-') {
       throw std::invalid_argument(flag + ": unknown flag (see --help)");
     } else if (o.input.empty()) {

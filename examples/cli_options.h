@@ -1,13 +1,17 @@
-// Command-line parsing for sss_render: every flag, its default and its unit in one table.
+// Command-line parsing for sss_render: every flag, its default and its unit in one table; the
+// defaults of the pass's settings are the pass's own.
 #pragma once
 
 #include <cstddef>
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "material.h"
+
+class vtkSubsurfacePass;
 
 namespace sss::cli {
 
@@ -26,15 +30,13 @@ struct Options {
   Eigen::Vector3d up{0.0, 0.0, 1.0};
   bool ortho = false;
   int width = 512, height = 512;
-  std::string method = "grid";
+  std::string method = "gpu";
   std::string backend = "egl";
-  std::string strategy = "grid";  // the pass's defaults
-  int grid_level = 0;
-  int max_map_size = 512;
-  double opening_angle = 2.0;
-  double group_diffusion_lengths = 1000.0;
+  // The pass's settings: unset ones keep vtkSubsurfacePass's defaults.
+  std::optional<std::string> strategy;
+  std::optional<int> grid_level, max_map_size, cell_samples, near_rings;
+  std::optional<double> opening_angle, group_diffusion_lengths, texel_per_radius;
   double exposure = 0.0;  // 0: automatic
-  double texel_per_z_r = 0.25;
   int frames = 0;
   double radius_scale = 1.5;
   std::size_t mesh_samples = 0;
@@ -43,6 +45,9 @@ struct Options {
 
 // Throws std::invalid_argument with a message naming the flag and what is wrong.
 Options parse(int argc, char** argv);
+
+// The pass's settings given on the command line, onto `pass`; the rest keep its defaults.
+void apply_pass_settings(const Options& o, vtkSubsurfacePass* pass);
 
 // The value of a numeric flag; throws std::invalid_argument naming the flag otherwise.
 double number(const std::string& flag, const std::string& text);

@@ -82,7 +82,7 @@ struct Options {
   std::size_t samples = 0;
   std::string scale_mesh;
   std::vector<std::size_t> scale_points{100000, 300000, 1000000, 2000000, 5000000};
-  std::vector<std::string> scale_strategies{"paper", "grid", "surfel"};
+  std::vector<std::string> scale_strategies{"paper", "near-far"};
   std::vector<std::string> settings;  // replaces the sweep when given
   int frames = 8;
   int size = 512;
@@ -100,33 +100,32 @@ std::vector<std::string> split(const std::string& text) {
 }
 
 
-// A setting of the pass; level and map 0 mean the pass's own choice.
+// A setting of the pass; unset fields keep the pass's defaults.
 struct Setting {
   std::string strategy;
-  int grid_level = 0;
-  int max_map = 4096;
+  int max_map = 0, cell_samples = 0;
+  double opening_angle = 0;
   bool is_paper = false, is_default = false;
-  double opening_angle = 0.5, group_lengths = 2.0;  // the accurate setting
 };
 
-// "strategy[:map[:level[:angle[:groups]]]]", e.g. "surfel:1024:0:0.8:4".
+// "strategy[:map[:angle[:samples]]]", e.g. "near-far:1024:1:8"; "paper" is the paper's.
 Setting setting_of(const std::string& text) {
   std::vector<std::string> f;
   std::stringstream in(text);
   for (std::string part; std::getline(in, part, ':');) f.push_back(part);
   Setting s;
   s.strategy = f.at(0);
-  sss::cli::strategy_of(s.strategy);
-  if (f.size() > 1) s.max_map = static_cast<int>(number("--settings", f[1]));
-  if (f.size() > 2) s.grid_level = static_cast<int>(number("--settings", f[2]));
-  if (f.size() > 3) s.opening_angle = number("--settings", f[3]);
-  if (f.size() > 4) s.group_lengths = number("--settings", f[4]);
-  s.is_paper = s.strategy == "paper";
   vtkNew<vtkSubsurfacePass> pass;
-  s.is_default = sss::cli::strategy_of(s.strategy) == pass->GetKernelStrategy() &&
-                 s.max_map == pass->GetMaxMapSize() && s.grid_level == pass->GetGridLevel() &&
-                 s.opening_angle == pass->GetOpeningAngle() &&
-                 s.group_lengths == pass->GetMaxGroupDiffusionLengths();
+  if (!pass->SetKernelStrategyByName(s.strategy))
+    throw std::invalid_argument("--settings: '" + s.strategy + "' is not near-far or paper");
+  if (f.size() > 1) s.max_map = static_cast<int>(number("--settings", f[1]));
+  if (f.size() > 2) s.opening_angle = number("--settings", f[2]);
+  if (f.size() > 3) s.cell_samples = static_cast<int>(number("--settings", f[3]));
+  s.is_paper = s.strategy == "paper";
+  vtkNew<vtkSubsurfacePass> defaults;
+  s.is_default = !s.is_paper && (s.max_map == 0 || s.max_map == defaults->GetMaxMapSize()) &&
+                 (s.opening_angle == 0 || s.opening_angle == defaults->GetOpeningAngle()) &&
+                 (s.cell_samples == 0 || s.cell_samples == defaults->GetCellSamples());
   return s;
 }
 
@@ -179,7 +178,7 @@ Options parse(int argc, char** argv) {
   if (o.frames < 1 || o.size < 16 || !(o.mm_per_unit > 0) || o.materials.empty())
     throw std::invalid_argument("--frames, --size, --mm-per-unit need positive values and "
                                 "--materials at least one name");
-  for (const std::string& s : o.scale_strategies) sss::cli::strategy_of(s);
+  for (const std::string& s : o.scale_strategies) setting_of(s);
   if (o.cache.empty()) {
     const char* xdg = std::getenv("XDG_CACHE_HOME");
     const char* home = std::getenv("HOME");
@@ -231,18 +230,10 @@ void write_row(std::ostream& out, const Row& r) {
 // the grid strategies by level, the per-surfel walk by map size, and the handle's balanced and
 // accurate qualities.
 std::vector<Setting> sweep(bool quick) {
-  const Setting paper = setting_of("paper:512"), defaults = setting_of("grid:512:0:2:1000"),
-                accurate = setting_of("surfel");
-  if (quick) return {paper, defaults, setting_of("surfel:512:0:1:1000"), accurate};
-  std::vector<Setting> s{paper, defaults, setting_of("grid:512:6:2:1000"),
-                         setting_of("grid:512:0:1:1000"), setting_of("surfel:512:0:1:1000"),
-                         setting_of("surfel:1024:0:0.8:4")};
-  for (const char* strategy : {"grid", "grid-near"})
-    for (const char* level : {"4", "5", "6"})
-      s.push_back(setting_of(std::string(strategy) + ":4096:" + level));
-  for (const char* map : {"512", "1024", "2048"}) s.push_back(setting_of(std::string("surfel:") + map));
-  s.push_back(accurate);
-  return s;
+  const Setting paper = setting_of("paper"), defaults = setting_of("near-far");
+  if (quick) return {paper, defaults, setting_of("near-far:1024:1:8")};
+  return {paper, defaults, setting_of("near-far:1024:1:8"), setting_of("near-far:2048:1:16"),
+          setting_of("near-far:4096:0.3:32")};
 }
 
 struct Cloud {
@@ -289,23 +280,23 @@ std::vector<sss::Rgb> read_B(TranslucentScene& scene) {
 // Applies a setting, renders the bake, times frames; fills the row's timings and counts.
 void measure(TranslucentScene& scene, const Setting& s, int frames, Row& row) {
   vtkSubsurfacePass* pass = scene.pass;
-  pass->SetKernelStrategy(sss::cli::strategy_of(s.strategy));
-  pass->SetGridLevel(s.grid_level);
-  pass->SetMaxMapSize(s.max_map);
-  pass->SetOpeningAngle(s.opening_angle);
-  pass->SetMaxGroupDiffusionLengths(s.group_lengths);
+  vtkNew<vtkSubsurfacePass> defaults;
+  pass->SetKernelStrategyByName(s.strategy);
+  pass->SetMaxMapSize(s.max_map ? s.max_map : defaults->GetMaxMapSize());
+  pass->SetOpeningAngle(s.opening_angle ? s.opening_angle : defaults->GetOpeningAngle());
+  pass->SetCellSamples(s.cell_samples ? s.cell_samples : defaults->GetCellSamples());
   scene.window->Render();
   row.strategy = s.strategy;
   row.is_paper = s.is_paper;
   row.is_default = s.is_default;
-  row.map_size = s.is_paper ? 512 : s.max_map;
+  row.map_size = s.is_paper ? 512 : pass->GetMaxMapSize();
   row.grid_level = pass->GetLastGridLevel();
   row.opening_angle = pass->GetOpeningAngle();
-  row.group_lengths = pass->GetMaxGroupDiffusionLengths();
-  row.bake_s = pass->GetLastIlluminationSeconds() + pass->GetLastVirtualPointSeconds() +
+  row.group_lengths = pass->GetCellSamples();
+  row.bake_s = pass->GetLastBakeSeconds() + pass->GetLastIlluminationSeconds() +
                pass->GetLastSurfelSeconds();
   row.virtual_points = static_cast<double>(pass->GetLastVirtualPoints());
-  row.lit_samples = static_cast<double>(pass->GetLastLitSamples());
+  row.lit_samples = static_cast<double>(pass->GetLastLitCells());
   row.frame_static_s = sss::cli::time_light_static(scene, frames);
   row.frame_moving_s = sss::cli::time_light_moving(scene, row.bake_s > 2.0 ? 1 : frames);
 }
@@ -355,8 +346,8 @@ void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
       row.material = name;
       row.plain_points_s = plain;
       if (s.strategy == over_budget) {
-        std::fprintf(stderr, "  %-9s level %d map %4d: skipped (a cheaper one took over %g s)\n",
-                     s.strategy.c_str(), s.grid_level, s.max_map, o.max_bake_s);
+        std::fprintf(stderr, "  %-9s map %4d: skipped (a cheaper one took over %g s)\n",
+                     s.strategy.c_str(), s.max_map, o.max_bake_s);
         continue;
       }
       measure(scene, s, o.frames, row);
@@ -414,10 +405,7 @@ void run_scale(const Options& o, std::ostream& csv) {
       row.points = cloud.surfels.size();
       row.material = material.name;
       row.plain_points_s = plain;
-      // paper: the paper's setting; grid: the pass's defaults; the others at the accurate one.
-      const Setting s = setting_of(strategy == "paper" ? "paper:512"
-                                   : strategy == "grid" ? "grid:512:0:2:1000"
-                                                        : strategy);
+      const Setting s = setting_of(strategy);
       measure(scene, s, o.frames, row);
       row.peak_rss_mb = peak_rss_mb();
       print_row(row);
@@ -468,7 +456,7 @@ int run(Options o) {
     o.materials = {"marble", "ketchup"};
     o.frames = std::min(o.frames, 3);
     o.scale_points = {2000, 4000, 8000};
-    o.scale_strategies = {"paper", "surfel"};
+    o.scale_strategies = {"paper", "near-far"};
     o.size = std::min(o.size, 256);
   }
   if (!o.settings.empty()) o.scale_points.clear();  // a custom sweep measures only itself

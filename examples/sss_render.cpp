@@ -70,7 +70,7 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
   {
     std::ofstream out(partial);
     out << "{\n  \"method\": \"" << o.method << "\",\n  \"backend\": \"" << o.backend
-        << "\",\n  \"strategy\": \"" << o.strategy << "\",\n"
+        << "\",\n  \"strategy\": \"" << pass->GetKernelStrategyAsString() << "\",\n"
         << "  \"input\": \"" << (o.input.empty() ? "procedural torus" : o.input) << "\",\n"
         << "  \"material\": {\"name\": \"" << m.name << "\", \"sigma_a_per_mm\": "
         << json_rgb(m.sigma_a) << ", \"sigma_s_prime_per_mm\": " << json_rgb(m.sigma_s_prime)
@@ -84,27 +84,31 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"height\": " << o.height << ", \"projection\": \""
         << (o.ortho ? "orthographic" : "perspective") << "\"},\n"
         << "  \"counts\": {\"surfels\": " << cloud.size()
-        << ", \"lit_samples\": " << pass->GetLastLitSamples()
+        << ", \"lit_cells\": " << pass->GetLastLitCells()
+        << ", \"near_field_entries\": " << pass->GetLastNearFieldEntries()
         << ", \"virtual_points\": " << pass->GetLastVirtualPoints() << "},\n"
         << "  \"settings\": {\"surfel_radius\": " << cloud.radius
-        << ", \"texel_per_z_r\": " << o.texel_per_z_r << ", \"max_map_size\": " << o.max_map_size
+        << ", \"texel_per_radius\": " << pass->GetTexelPerRadius()
+        << ", \"max_map_size\": " << pass->GetMaxMapSize()
         << ", \"map_width\": " << pass->GetLastMapWidth()
         << ", \"map_height\": " << pass->GetLastMapHeight()
         << ", \"texel_mm\": " << pass->GetLastTexelMillimetres()
+        << ", \"cell_samples\": " << pass->GetCellSamples()
+        << ", \"near_field_rings\": " << pass->GetNearFieldRings()
+        << ", \"near_reach_mm\": " << pass->GetLastNearReachMillimetres()
+        << ", \"far_from_mm\": " << pass->GetLastFarFromMillimetres()
+        << ", \"opening_angle\": " << pass->GetOpeningAngle()
+        << ", \"group_diffusion_lengths\": " << pass->GetMaxGroupDiffusionLengths()
         << ", \"grid_level\": " << pass->GetLastGridLevel()
         << ", \"grid_spacing_mm\": " << pass->GetLastGridSpacingMillimetres()
-        << ", \"requested_grid_level\": " << o.grid_level
-        << ", \"opening_angle\": " << o.opening_angle
-        << ", \"group_diffusion_lengths\": " << o.group_diffusion_lengths
-        << ", \"near_field_cells\": " << pass->GetNearFieldCells()
         << ", \"exposure\": " << pass->GetExposure() << "},\n"
-        << "  \"steps_run\": {\"illumination\": " << pass->GetIlluminationRuns()
-        << ", \"virtual_points\": " << pass->GetVirtualPointRuns()
+        << "  \"steps_run\": {\"bake\": " << pass->GetBakeRuns()
+        << ", \"illumination\": " << pass->GetIlluminationRuns()
         << ", \"surfels\": " << pass->GetSurfelRuns() << ", \"view\": " << pass->GetViewRuns()
         << "},\n"
         << "  \"seconds\": {\"load\": " << t.load << ", \"reference\": " << t.reference
+        << ", \"bake\": " << pass->GetLastBakeSeconds()
         << ", \"illumination\": " << pass->GetLastIlluminationSeconds()
-        << ", \"virtual_points\": " << pass->GetLastVirtualPointSeconds()
         << ", \"surfels\": " << pass->GetLastSurfelSeconds()
         << ", \"first_frame\": " << t.first_frame
         << ", \"camera_only_frame\": " << t.camera_frame << "},\n"
@@ -147,12 +151,7 @@ int run(const Options& o) {
   sss::cli::TranslucentScene scene(window, cloud, material, lights);
   vtkSubsurfacePass* pass = scene.pass;
   vtkActor* actor = scene.actor;
-  pass->SetKernelStrategy(sss::cli::strategy_of(o.strategy));
-  pass->SetGridLevel(o.grid_level);
-  pass->SetMaxMapSize(o.max_map_size);
-  pass->SetOpeningAngle(o.opening_angle);
-  pass->SetMaxGroupDiffusionLengths(o.group_diffusion_lengths);
-  pass->SetTexelPerZr(o.texel_per_z_r);
+  sss::cli::apply_pass_settings(o, pass);
   pass->SetExposure(o.exposure);
   pass->SetCaptureLinearImage(!o.linear_pfm.empty() || o.exposure == 0.0);
   scene.aim_camera(cloud.bounds().center(), o.view_dir, o.up, o.ortho);
@@ -160,7 +159,6 @@ int run(const Options& o) {
 
   if (o.method == "reference") {
     sss::ReferenceSettings settings;
-    settings.illumination.texel_per_z_r = o.texel_per_z_r;
     settings.progress = print_progress;
     const sss::SurfelRadiance reference = sss::render_reference(cloud, material, lights, settings);
     vtkNew<vtkFloatArray> B;

@@ -47,22 +47,6 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud) {
   return polydata;
 }
 
-int strategy_of(const std::string& name) {
-  if (name == "paper") return vtkSubsurfacePass::PAPER;
-  if (name == "grid") return vtkSubsurfacePass::GRID;
-  if (name == "surfel") return vtkSubsurfacePass::SURFEL;
-  return vtkSubsurfacePass::GRID_NEAR;
-}
-
-const char* strategy_name(int strategy) {
-  switch (strategy) {
-    case vtkSubsurfacePass::PAPER: return "paper";
-    case vtkSubsurfacePass::GRID: return "grid";
-    case vtkSubsurfacePass::SURFEL: return "surfel";
-    default: return "grid-near";
-  }
-}
-
 TranslucentScene::TranslucentScene(vtkRenderWindow* w, const SurfelCloud& cloud,
                                    const Material& m, const std::vector<DirectionalLight>& lights)
   : window(w), polydata(to_polydata(cloud)) {

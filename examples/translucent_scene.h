@@ -24,10 +24,6 @@ namespace sss::cli {
 // Points, normals and (when the cloud has albedo) 8-bit colours.
 vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud);
 
-// "paper", "grid", "grid-near", "surfel" -> vtkSubsurfacePass::KernelStrategies and back.
-int strategy_of(const std::string& name);
-const char* strategy_name(int strategy);
-
 struct TranslucentScene {
   vtkSmartPointer<vtkRenderWindow> window;
   vtkSmartPointer<vtkPolyData> polydata;

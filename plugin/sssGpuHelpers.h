@@ -15,6 +15,9 @@ class vtkTextureObject;
 namespace sss
 {
 
+constexpr int kMaxLights = 4;   // lights that light translucent actors
+constexpr int kMaxLevels = 15;  // pyramid levels per light (maps or surfel lists of 2^14)
+
 // An RGBA32F texture with nearest filtering, clamped at the edges.
 vtkSmartPointer<vtkTextureObject> float_texture_2d(vtkOpenGLRenderWindow* window, int w, int h);
 

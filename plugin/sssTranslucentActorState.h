@@ -1,11 +1,12 @@
-// GPU state of one translucent actor in a vtkSubsurfacePass: the illumination maps with their
-// pyramid (step 1), the virtual points' 3-D radiance texture (step 2) and each surfel's B
-// (step 2, per surfel), rebuilt only when what they depend on changed.
+// GPU state of one translucent actor in a vtkSubsurfacePass: the light maps (step 1), step 2
+// (the surfel pipeline, or the paper's virtual points) and each surfel's B in input order for
+// the camera view (step 3), rebuilt only when what they depend on changed.
 #ifndef sssTranslucentActorState_h
 #define sssTranslucentActorState_h
 
 #include "dipole.h"
 #include "material.h"
+#include "sssSurfelPipeline.h"
 #include "sssSurfelPreparation.h"
 
 #include "vtkNew.h"
@@ -29,31 +30,26 @@ namespace sss
 
 enum class KernelStrategy
 {
-  Paper = 0,     // 512 map, 49 Gaussian taps in a 40 x 40 window, grid only
-  Grid = 1,      // tree walk at the virtual points' surface anchors, grid only
-  GridNear = 2,  // far part on the grid, near part per surfel
-  Surfel = 3,    // tree walk at every surfel, no grid
-  NearFar = 4    // near field on each surfel's local surface, far field by the walk
+  Paper = 0,   // 512 map, 49 Gaussian taps in a 40 x 40 window at 64^3 grid points
+  NearFar = 1  // each surfel's cell lit; near field by a table, far field by a walk
 };
 
 struct GpuSettings
 {
   KernelStrategy strategy = KernelStrategy::NearFar;
-  double opening_angle = 2.0;
-  double max_group_diffusion_lengths = 1000.0;
-  double near_field_cells = 2.0;
-  int grid_level = 0;
-  double texel_per_z_r = 0.25;
-  int max_map_size = 512;
-  int near_rings = 8;  // near-field quadrature: rings, and at most this many nodes on each
-  int near_nodes = 8;
+  int grid_level = 0;     // Paper: 2^level grid points per axis, 0: its 64
+  int max_map_size = 2048;
+  double texel_per_radius = 0.25;
+  SurfelPipelineSettings pipeline;
   bool operator==(const GpuSettings& o) const
   {
-    return strategy == o.strategy && opening_angle == o.opening_angle &&
-      max_group_diffusion_lengths == o.max_group_diffusion_lengths &&
-      near_field_cells == o.near_field_cells && grid_level == o.grid_level &&
-      texel_per_z_r == o.texel_per_z_r && max_map_size == o.max_map_size &&
-      near_rings == o.near_rings && near_nodes == o.near_nodes;
+    const SurfelPipelineSettings &a = pipeline, &b = o.pipeline;
+    return strategy == o.strategy && grid_level == o.grid_level &&
+      max_map_size == o.max_map_size && texel_per_radius == o.texel_per_radius &&
+      a.quadrature.rings == b.quadrature.rings && a.quadrature.min_nodes == b.quadrature.min_nodes &&
+      a.quadrature.max_nodes == b.quadrature.max_nodes && a.quadrature.radial == b.quadrature.radial &&
+      a.cell_samples == b.cell_samples && a.opening_angle == b.opening_angle &&
+      a.max_group_diffusion_lengths == b.max_group_diffusion_lengths;
   }
 };
 
@@ -69,20 +65,15 @@ struct GpuLight
 
 struct StepReport
 {
-  bool illumination = false, virtual_points = false, surfels = false;
-  double seconds_illumination = 0, seconds_virtual_points = 0, seconds_surfels = 0;
-  std::size_t lit_samples = 0, virtual_point_count = 0, surfel_count = 0;
+  bool bake = false, illumination = false, surfels = false;
+  double seconds_bake = 0, seconds_illumination = 0, seconds_surfels = 0;
+  std::size_t lit_cells = 0, virtual_point_count = 0, surfel_count = 0, near_entries = 0;
   int map_width = 0, map_height = 0, grid_level = 0;
   double texel_mm = 0, grid_spacing_mm = 0;
   double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
-  int near_nodes = 0;                          // per surfel and light
 };
 
 struct ReceiverList;
-
-constexpr int kMaxLights = 4;
-constexpr int kMaxLevels = 15;
-constexpr int kMaxRings = 32;
 
 class TranslucentActorState
 {
@@ -114,33 +105,22 @@ public:
 private:
   struct Gpu;
   bool upload_geometry(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-    const GpuSettings& settings, std::string& error);
+    bool albedo_from_colour, const GpuSettings& settings, StepReport& report, std::string& error);
   bool run_illumination(vtkOpenGLRenderWindow* window, const std::vector<GpuLight>& lights,
     const GpuSettings& settings, bool albedo_from_colour, StepReport& report, std::string& error);
-  bool run_virtual_points(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
-    std::string& error);
-  bool run_surfels(vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error);
-  // The near field at every surfel into the surfel receivers' B texture.
-  bool run_near_field(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
-    std::string& error);
-  // B (eq. 17) at every receiver of the list into `output` (the list's B texture when null),
-  // by one quad over the list.
-  bool gather_at_receivers(vtkOpenGLRenderWindow* window, const GpuSettings& settings,
-    ReceiverList& receivers, int part, double r0, double r1, std::string& error,
-    vtkTextureObject* output = nullptr);
-  void set_near_field_uniforms(vtkShaderProgram* program);
-  void set_gather_uniforms(vtkShaderProgram* program, const GpuSettings& settings, int part,
-    double r0, double r1);
-  std::string gather_source(const GpuSettings& settings) const;
+  // The paper's taps at the virtual points, into their 3-D texture.
+  bool run_paper_taps(vtkOpenGLRenderWindow* window, std::string& error);
+  // Each surfel's B into the input-order list: from the surfel pipeline or the 3-D texture.
+  bool resolve(vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error);
 
   Gpu* gpu_;
   Material material_;
   std::vector<double> material_key_;
   vtkMTimeType geometry_time_ = 0;
   GpuSettings geometry_settings_;
+  bool geometry_albedo_ = false;
   std::vector<GpuLight> lights_;
   GpuSettings settings_;
-  bool albedo_from_colour_ = false;
   bool valid_ = false;
   int list_width_ = 1;
 };

@@ -33,6 +33,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -152,15 +153,18 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   }
 
   sss::GpuSettings settings;
-  settings.strategy = static_cast<sss::KernelStrategy>(this->KernelStrategy);
-  settings.opening_angle = this->OpeningAngle;
-  settings.max_group_diffusion_lengths = this->MaxGroupDiffusionLengths;
-  settings.near_field_cells = this->NearFieldCells;
-  settings.near_rings = this->NearFieldRings;
-  settings.near_nodes = this->NearFieldNodes;
+  settings.strategy = this->KernelStrategy == PAPER ? sss::KernelStrategy::Paper
+                                                    : sss::KernelStrategy::NearFar;
   settings.grid_level = this->GridLevel;
-  settings.texel_per_z_r = this->TexelPerZr;
   settings.max_map_size = this->MaxMapSize;
+  settings.texel_per_radius = this->TexelPerRadius;
+  settings.pipeline.cell_samples = this->CellSamples;
+  settings.pipeline.opening_angle = this->OpeningAngle;
+  settings.pipeline.max_group_diffusion_lengths = this->MaxGroupDiffusionLengths;
+  settings.pipeline.quadrature.rings = this->NearFieldRings;
+  settings.pipeline.quadrature.min_nodes = 8;
+  settings.pipeline.quadrature.max_nodes = std::max(8, 3 * this->NearFieldRings);
+  settings.pipeline.quadrature.radial = 2;
 
   // Steps 1-2 for each translucent actor, where their inputs changed.
   impl.Ready.clear();
@@ -260,33 +264,30 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
       continue;
     }
     impl.Ready.insert(actor);
-    if (report.illumination)
+    if (report.bake)
     {
-      ++this->IlluminationRuns;
-      this->LastIlluminationSeconds = report.seconds_illumination;
-      this->LastLitSamples = static_cast<vtkIdType>(report.lit_samples);
-      this->LastMapWidth = report.map_width;
-      this->LastMapHeight = report.map_height;
-      this->LastTexelMillimetres = report.texel_mm;
-    }
-    if (report.virtual_points)
-    {
-      ++this->VirtualPointRuns;
-      this->LastVirtualPointSeconds = report.seconds_virtual_points;
+      ++this->BakeRuns;
+      this->LastBakeSeconds = report.seconds_bake;
+      this->LastNearReachMillimetres = report.near_reach_mm;
+      this->LastFarFromMillimetres = report.far_from_mm;
+      this->LastNearFieldEntries = static_cast<vtkIdType>(report.near_entries);
       this->LastVirtualPoints = static_cast<vtkIdType>(report.virtual_point_count);
       this->LastGridLevel = report.grid_level;
       this->LastGridSpacingMillimetres = report.grid_spacing_mm;
     }
-    else if (report.illumination)
+    if (report.illumination)
     {
-      this->LastVirtualPoints = 0;
-      this->LastGridLevel = 0;
-      this->LastGridSpacingMillimetres = 0;
+      ++this->IlluminationRuns;
+      this->LastIlluminationSeconds = report.seconds_illumination;
+      this->LastMapWidth = report.map_width;
+      this->LastMapHeight = report.map_height;
+      this->LastTexelMillimetres = report.texel_mm;
     }
     if (report.surfels)
     {
       ++this->SurfelRuns;
       this->LastSurfelSeconds = report.seconds_surfels;
+      this->LastLitCells = static_cast<vtkIdType>(report.lit_cells);
     }
     this->LastSurfels = static_cast<vtkIdType>(report.surfel_count);
   }
@@ -548,19 +549,42 @@ void vtkSubsurfacePass::ReleaseGraphicsResources(vtkWindow* w)
   this->Superclass::ReleaseGraphicsResources(w);
 }
 
+const char* vtkSubsurfacePass::GetKernelStrategyAsString()
+{
+  return this->KernelStrategy == PAPER ? "paper" : "near-far";
+}
+
+bool vtkSubsurfacePass::SetKernelStrategyByName(const std::string& name)
+{
+  if (name == "paper")
+  {
+    this->SetKernelStrategyToPaper();
+  }
+  else if (name == "near-far")
+  {
+    this->SetKernelStrategyToNearFar();
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
 void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "KernelStrategy: " << this->KernelStrategy << "\n";
+  os << indent << "KernelStrategy: " << this->GetKernelStrategyAsString() << "\n";
+  os << indent << "TexelPerRadius: " << this->TexelPerRadius << "\n";
+  os << indent << "MaxMapSize: " << this->MaxMapSize << "\n";
+  os << indent << "CellSamples: " << this->CellSamples << "\n";
   os << indent << "OpeningAngle: " << this->OpeningAngle << "\n";
   os << indent << "MaxGroupDiffusionLengths: " << this->MaxGroupDiffusionLengths << "\n";
   os << indent << "NearFieldRings: " << this->NearFieldRings << "\n";
-  os << indent << "NearFieldNodes: " << this->NearFieldNodes << "\n";
-  os << indent << "NearFieldCells: " << this->NearFieldCells << "\n";
   os << indent << "GridLevel: " << this->GridLevel << "\n";
-  os << indent << "TexelPerZr: " << this->TexelPerZr << "\n";
-  os << indent << "MaxMapSize: " << this->MaxMapSize << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
-  os << indent << "Runs (illumination, virtual points, surfels, view): " << this->IlluminationRuns
-     << " " << this->VirtualPointRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";
+  os << indent << "CaptureLinearImage: " << this->CaptureLinearImage << "\n";
+  os << indent << "MeasureStepTimes: " << this->MeasureStepTimes << "\n";
+  os << indent << "Runs (bake, illumination, surfels, view): " << this->BakeRuns << " "
+     << this->IlluminationRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";
 }

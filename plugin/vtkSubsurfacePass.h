@@ -5,27 +5,22 @@
  * Renders its delegate (the usual camera/sequence passes) into a float image and composites
  * it into the output. Actors that carry a vtkTranslucentMaterial and draw with a
  * vtkSurfelMapper get, in three steps:
- *  1. an illumination map from every switched-on light of the renderer (treated as
- *     directional, from its focal point towards its position), with E dA per texel (eq. 15),
- *     and a pyramid of it;
- *  2. B (eq. 17) at the pruned virtual grid points, into a 3-D texture, and at every surfel
- *     (the near part of the kernel, or all of it, plus the grid's trilinear far part);
+ *  1. a light map from every switched-on light of the renderer (treated as directional, from
+ *     its focal point towards its position): the discs the light sees, lifted onto their
+ *     local surfaces;
+ *  2. B (eq. 17) at every surfel. Each surfel stands for its cell (the part of the surface
+ *     nearer to it than to any other surfel) lit with the irradiance of eq. 15 averaged over
+ *     CellSamples points of the cell, so shadow edges resolve below the surfel size. The near
+ *     field (out to two disc radii) comes from a table of weights on the neighbours' irradiance
+ *     that only the geometry and the material change; the far field, where the kernel reaches
+ *     farther, from a walk of the lit cells' pyramid. The CPU reference
+ *     (core/reference_renderer.h) computes the same model at higher precision;
  *  3. the camera view: Lo = Ft(eta, wo) B per surfel (eq. 14), tone mapped in the composite.
- * Steps 1-2 run only when a light, the geometry, the material or a setting changed; a camera
- * move runs step 3 alone. Other actors draw as before.
+ * The table is rebuilt when the geometry, the material or a setting changes; steps 1-2 run
+ * when a light changes; a camera move runs step 3 alone. Other actors draw as before.
  *
- * The kernel strategy chooses how B is summed (KernelStrategy): PAPER is the paper's 49
- * Gaussian taps over a 40 x 40 window of a 512 x 512 map at the grid points; GRID (the
- * default) walks the map's pyramid at the virtual points, each moved onto the surface along
- * its nearest surfel's normal (grid alone); GRID_NEAR carries the far part on the grid and
- * sums the near part at each surfel; SURFEL walks the pyramid at every surfel. All sums
- * reach as far as the material's kernel does (1e-7 of its integral).
- *
- * The defaults (GRID, 512 map, opening angle 2, no group limit, at most 16384 virtual
- * points) cost what the paper's setting costs and are more accurate than it (about 15-30 %
- * mean error on the Stanford bunny against the paper's 23-35 %); SURFEL with a 4096 map,
- * opening angle 0.5 and groups of 2 diffusion lengths is under 1 % at 15-30 times the cost
- * of a light change (docs/benchmark/bench.md).
+ * KernelStrategy PAPER is the paper's method for comparison: 49 Gaussian taps in a 40 x 40
+ * window of a 512 x 512 map at 64^3 grid points, interpolated trilinearly.
  */
 #ifndef vtkSubsurfacePass_h
 #define vtkSubsurfacePass_h
@@ -35,6 +30,7 @@
 #include "vtkImageProcessingPass.h"
 
 #include <memory>
+#include <string>
 
 class vtkActor;
 class vtkFloatArray;
@@ -49,77 +45,66 @@ public:
   enum KernelStrategies
   {
     PAPER = 0,
-    GRID = 1,
-    GRID_NEAR = 2,
-    SURFEL = 3,
-    NEAR_FAR = 4
+    NEAR_FAR = 1
   };
 
   ///@{
   /** How B is summed (see the class comment). Default NEAR_FAR. */
   vtkSetClampMacro(KernelStrategy, int, PAPER, NEAR_FAR);
   vtkGetMacro(KernelStrategy, int);
+  void SetKernelStrategyToPaper() { this->SetKernelStrategy(PAPER); }
+  void SetKernelStrategyToNearFar() { this->SetKernelStrategy(NEAR_FAR); }
+  /** "paper" or "near-far". */
+  const char* GetKernelStrategyAsString();
+  /** Sets the strategy by its name; returns false (and changes nothing) for an unknown one. */
+  bool SetKernelStrategyByName(const std::string& name);
   ///@}
 
   ///@{
   /**
-   * Pyramid walk: a group of map texels counts as one source once its size is below this
-   * fraction of its distance (default 2; smaller is more accurate and slower).
+   * Light maps: texel edge over the surfel disc radius (default 0.25, so each cell is several
+   * texels across) and the largest map side (default 2048; a larger scene gets coarser texels).
+   * PAPER always uses a 512 x 512 map.
+   */
+  vtkSetClampMacro(TexelPerRadius, double, 0.01, 16.0);
+  vtkGetMacro(TexelPerRadius, double);
+  vtkSetClampMacro(MaxMapSize, int, 16, 16384);
+  vtkGetMacro(MaxMapSize, int);
+  ///@}
+
+  ///@{
+  /** Points of each cell whose light the map is asked for, per light (default 16). */
+  vtkSetClampMacro(CellSamples, int, 1, 256);
+  vtkGetMacro(CellSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * Far field: a group of cells counts as one source once its size is below this fraction of
+   * its distance (default 0.5; smaller is more accurate and slower), and only while it spans
+   * at most MaxGroupDiffusionLengths diffusion lengths (1 / s_tr) of every channel whose
+   * kernel still matters at its distance (default 2).
    */
   vtkSetClampMacro(OpeningAngle, double, 0.05, 2.0);
   vtkGetMacro(OpeningAngle, double);
-  ///@}
-
-  ///@{
-  /**
-   * Pyramid walk: a group also counts as one source only while it spans at most this many
-   * diffusion lengths (1 / s_tr) of every channel whose kernel still matters at its distance;
-   * over more, the kernel's exponential leaves its second-order expansion (default 1000: no
-   * limit in practice; 2 keeps strongly absorbing channels accurate at a fine setting).
-   */
   vtkSetClampMacro(MaxGroupDiffusionLengths, double, 0.1, VTK_DOUBLE_MAX);
   vtkGetMacro(MaxGroupDiffusionLengths, double);
   ///@}
 
   ///@{
   /**
-   * NEAR_FAR: the near field's quadrature on each surfel's local surface: this many rings,
-   * each holding an equal share of the kernel's near integral (default 8), with at most
-   * NearFieldNodes nodes on each (default 8; at least 4).
+   * Near-field table: its quadrature's rings on each receiver's local surface (default 16;
+   * each ring holds an equal share of the kernel's near integral, with 8 to 3 x rings nodes
+   * and 2 radii per node). More rings cost bake time and memory, not frame time.
    */
-  vtkSetClampMacro(NearFieldRings, int, 1, 32);
+  vtkSetClampMacro(NearFieldRings, int, 1, 64);
   vtkGetMacro(NearFieldRings, int);
-  vtkSetClampMacro(NearFieldNodes, int, 1, 64);
-  vtkGetMacro(NearFieldNodes, int);
   ///@}
 
   ///@{
-  /**
-   * GRID_NEAR: the kernel is split between r0 = NearFieldCells grid spacings and 2 r0
-   * (default 2).
-   */
-  vtkSetClampMacro(NearFieldCells, double, 0.5, 8.0);
-  vtkGetMacro(NearFieldCells, double);
-  ///@}
-
-  ///@{
-  /**
-   * Virtual grid: 2^GridLevel points per axis; 0 (default) chooses from the material's
-   * diffusion length and a budget of 16384 kept points; for PAPER, the paper's 64 per axis.
-   */
+  /** PAPER: 2^GridLevel virtual points per axis (default 0: the paper's 64). */
   vtkSetClampMacro(GridLevel, int, 0, 10);
   vtkGetMacro(GridLevel, int);
-  ///@}
-
-  ///@{
-  /**
-   * Illumination map texel as a fraction of the material's smallest z_r (default 0.25), and
-   * the largest map side (default 512). PAPER always uses a 512 x 512 map.
-   */
-  vtkSetClampMacro(TexelPerZr, double, 0.01, 64.0);
-  vtkGetMacro(TexelPerZr, double);
-  vtkSetClampMacro(MaxMapSize, int, 16, 16384);
-  vtkGetMacro(MaxMapSize, int);
   ///@}
 
   ///@{
@@ -172,21 +157,30 @@ public:
   ///@}
 
   ///@{
-  /** Statistics: how often each step ran, and what the last run of each measured. */
+  /**
+   * Statistics: how often each step ran (the bake: the near-field table, on geometry,
+   * material or setting changes), and what the last run of each measured.
+   */
+  vtkGetMacro(BakeRuns, int);
   vtkGetMacro(IlluminationRuns, int);
-  vtkGetMacro(VirtualPointRuns, int);
   vtkGetMacro(SurfelRuns, int);
   vtkGetMacro(ViewRuns, int);
+  vtkGetMacro(LastBakeSeconds, double);
   vtkGetMacro(LastIlluminationSeconds, double);
-  vtkGetMacro(LastVirtualPointSeconds, double);
   vtkGetMacro(LastSurfelSeconds, double);
   vtkGetMacro(LastViewSeconds, double);
-  vtkGetMacro(LastLitSamples, vtkIdType);
-  vtkGetMacro(LastVirtualPoints, vtkIdType);
+  vtkGetMacro(LastLitCells, vtkIdType);
   vtkGetMacro(LastSurfels, vtkIdType);
   vtkGetMacro(LastMapWidth, int);
   vtkGetMacro(LastMapHeight, int);
   vtkGetMacro(LastTexelMillimetres, double);
+  /** NEAR_FAR: the near field's reach and where the far field starts (0: none), in mm. */
+  vtkGetMacro(LastNearReachMillimetres, double);
+  vtkGetMacro(LastFarFromMillimetres, double);
+  /** NEAR_FAR: entries of the near-field table (16 bytes each on the GPU). */
+  vtkGetMacro(LastNearFieldEntries, vtkIdType);
+  /** PAPER: its grid. */
+  vtkGetMacro(LastVirtualPoints, vtkIdType);
   vtkGetMacro(LastGridLevel, int);
   vtkGetMacro(LastGridSpacingMillimetres, double);
   /** Translucent actors drawn with subsurface scattering in the last frame. */
@@ -206,32 +200,34 @@ protected:
   ~vtkSubsurfacePass() override;
 
   int KernelStrategy = NEAR_FAR;
-  double OpeningAngle = 2.0;
-  double MaxGroupDiffusionLengths = 1000.0;
-  double NearFieldCells = 2.0;
-  int NearFieldRings = 8;
-  int NearFieldNodes = 8;
+  double TexelPerRadius = 0.25;
+  int MaxMapSize = 2048;
+  int CellSamples = 16;
+  double OpeningAngle = 0.5;
+  double MaxGroupDiffusionLengths = 2.0;
+  int NearFieldRings = 16;
   int GridLevel = 0;
-  double TexelPerZr = 0.25;
-  int MaxMapSize = 512;
   double Exposure = 1.0;
   bool CaptureLinearImage = false;
   bool MeasureStepTimes = false;
 
+  int BakeRuns = 0;
   int IlluminationRuns = 0;
-  int VirtualPointRuns = 0;
   int SurfelRuns = 0;
   int ViewRuns = 0;
+  double LastBakeSeconds = 0;
   double LastIlluminationSeconds = 0;
-  double LastVirtualPointSeconds = 0;
   double LastSurfelSeconds = 0;
   double LastViewSeconds = 0;
-  vtkIdType LastLitSamples = 0;
-  vtkIdType LastVirtualPoints = 0;
+  vtkIdType LastLitCells = 0;
   vtkIdType LastSurfels = 0;
   int LastMapWidth = 0;
   int LastMapHeight = 0;
   double LastTexelMillimetres = 0;
+  double LastNearReachMillimetres = 0;
+  double LastFarFromMillimetres = 0;
+  vtkIdType LastNearFieldEntries = 0;
+  vtkIdType LastVirtualPoints = 0;
   int LastGridLevel = 0;
   double LastGridSpacingMillimetres = 0;
   int LastTranslucentActors = 0;

@@ -4,9 +4,8 @@
 // kappa |d|^2 / 2 below the disc's plane at offset d from its centre, the normal tilted by
 // kappa d), that normal turned towards the light, E dA = E_light Ft(eta, theta_i) times the
 // texel's area (the cosine of eq. 15 cancels against the surface a texel covers; none where
-// the lifted normal turns away from the light), and the covariance of the surface patch the
-// texel covers (for the pyramid's second-order terms). A unit normal marks a texel that sees
-// a disc (the near field's visibility test), lit or not.
+// the lifted normal turns away from the light; the paper's taps read it). A unit normal marks
+// a texel that sees a disc (the visibility test of light_maps.glsl), lit or not.
 
 in vec2 discCoord;
 in vec3 pointVC;
@@ -19,9 +18,6 @@ uniform mat3 viewToLocal;      // light view -> local mm frame
 uniform vec3 towardsLight;     // local frame, unit
 uniform vec3 irradianceArea;   // E_light per channel times the texel area (mm^2)
 uniform bool albedoFromColour;
-uniform vec3 mapAxisU;    // the map's image axes in the local frame
-uniform vec3 mapAxisV;
-uniform float texelEdge;  // mm
 
 //SSS::Dipole::Dec
 
@@ -49,14 +45,5 @@ void main()
   float lit = cosI > 0.0 ? 1.0 : 0.0;
   gl_FragData[0] = vec4(lifted, power.r + power.g + power.b);
   gl_FragData[1] = vec4(power, lit);  // w counts lit texels
-  gl_FragData[2] = vec4(n, 0.0);      // w: spread along the light (none for one texel)
-  // The patch is the texel square lifted onto the disc's plane: its edges are the map axes
-  // tilted by the slope along the light (clamped at grazing), each uniform over one texel.
-  float cosL = max(cosI, 0.1);
-  vec3 edgeU = mapAxisU - dot(n, mapAxisU) / cosL * towardsLight;
-  vec3 edgeV = mapAxisV - dot(n, mapAxisV) / cosL * towardsLight;
-  float var = texelEdge * texelEdge / 12.0;
-  mat3 cov = var * (outerProduct(edgeU, edgeU) + outerProduct(edgeV, edgeV));
-  gl_FragData[3] = vec4(cov[0][0], cov[1][1], cov[2][2], cov[0][1]);
-  gl_FragData[4] = vec4(cov[0][2], cov[1][2], 0.0, 0.0);
+  gl_FragData[2] = vec4(n, 0.0);
 }

@@ -1,11 +1,11 @@
 //VTK::System::Dec
-// Step 2, the near field at every surfel, drawn as one quad over the surfels' list (Morton
-// order, as for the pyramid walk): each fragment is one receiver.
+// Step 2, at every surfel: the near field from its row of the table, plus the far field by a
+// walk of the lights' source pyramids when the kernel reaches past the near field. Drawn as
+// one quad over the surfel list.
 
-uniform sampler2D receivers;       // xyz: local mm, w: the surface thickness (mm), 0: none
-uniform sampler2D receiverShape;   // xyz: unit normal, w: mean curvature (1/mm)
+in vec2 texCoord;  // over the surfel list
 
-in vec2 texCoord;  // over the list
+uniform bool addFarField;
 
 //SSS::Gather::Dec
 
@@ -13,15 +13,16 @@ in vec2 texCoord;  // over the list
 
 void main()
 {
-  ivec2 at = ivec2(texCoord * vec2(textureSize(receivers, 0)));
-  vec4 receiver = texelFetch(receivers, at, 0);
+  ivec2 at = ivec2(texCoord * vec2(textureSize(surfelPoint, 0)));
+  vec4 point = texelFetch(surfelPoint, at, 0);
   vec3 B = vec3(0.0);
-  if (receiver.w > 0.0)
+  if (point.w > 0.0)
   {
-    vec4 shape = texelFetch(receiverShape, at, 0);
-    // A fraction per receiver that turns its rings, so that neighbours' nodes do not line up.
-    float rotation = fract(sin(dot(vec2(at), vec2(12.9898, 78.233))) * 43758.5453);
-    B = nearFieldB(receiver.xyz, shape.xyz, shape.w, receiver.w, rotation);
+    B = nearFieldB(at);
+    if (addFarField)
+    {
+      B += farFieldB(point.xyz);
+    }
   }
   gl_FragData[0] = vec4(B, 1.0);
 }

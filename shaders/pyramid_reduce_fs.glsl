@@ -1,11 +1,11 @@
 //VTK::System::Dec
-// Builds one level of the illumination map's pyramid from the level below: summed power,
-// power-weighted mean point, normal and covariance of the points, and how far the children
-// spread along the light.
+// Builds one level of a source pyramid (the lit cells of step 2) from the level below: summed
+// power, power-weighted mean point, normal and covariance of the points, and a radius that
+// holds every child's group.
 
 uniform sampler2D mapPoint;   // xyz point (local mm), w: weight (sum of the power's channels)
-uniform sampler2D mapPower;   // rgb: E dA, w: lit texels
-uniform sampler2D mapNormal;  // xyz: unit normal, w: spread along the light (mm)
+uniform sampler2D mapPower;   // rgb: E dA, w: lit cells
+uniform sampler2D mapNormal;  // xyz: unit normal, w: radius of the group (mm)
 uniform sampler2D mapCovariance0;  // xx, yy, zz, xy (mm^2)
 uniform sampler2D mapCovariance1;  // xz, yz
 uniform ivec2 sourceOrigin;
@@ -13,7 +13,6 @@ uniform ivec2 sourceSize;
 uniform ivec2 targetSize;
 
 in vec2 texCoord;  // over the target level's rectangle
-uniform vec3 towardsLight;
 
 //VTK::Output::Dec
 
@@ -48,14 +47,14 @@ void main()
     normalSum += point[k].w * normal[k].xyz;
   }
   vec3 mean = weight > 0.0 ? pointSum / weight : vec3(0.0);
-  float spread = 0.0;
+  float radius = 0.0;
   mat3 covariance = mat3(0.0);
   for (int k = 0; k < 4; ++k)
   {
     if (point[k].w > 0.0)
     {
       vec3 offset = point[k].xyz - mean;
-      spread = max(spread, abs(dot(offset, towardsLight)) + normal[k].w);
+      radius = max(radius, length(offset) + normal[k].w);
       covariance += point[k].w * (cov[k] + outerProduct(offset, offset));
     }
   }
@@ -66,7 +65,7 @@ void main()
   float normalLength = length(normalSum);
   gl_FragData[0] = vec4(mean, weight);
   gl_FragData[1] = power;
-  gl_FragData[2] = vec4(normalLength > 0.0 ? normalSum / normalLength : vec3(0.0), spread);
+  gl_FragData[2] = vec4(normalLength > 0.0 ? normalSum / normalLength : vec3(0.0), radius);
   gl_FragData[3] = vec4(covariance[0][0], covariance[1][1], covariance[2][2], covariance[0][1]);
   gl_FragData[4] = vec4(covariance[0][2], covariance[1][2], 0.0, 0.0);
 }

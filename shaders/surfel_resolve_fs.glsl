@@ -1,37 +1,33 @@
 //VTK::System::Dec
-// Step 2, per surfel: B at the surfel = its own gather (all of the kernel, or the near part,
-// from the receivers' pass) plus the far part: gathered at the surfel too, or interpolated
-// trilinearly from the virtual points.
+// Each surfel's B into its input-order texel for the camera view: from the surfel pipeline's
+// list (NEAR_FAR), or interpolated trilinearly from the paper's virtual points.
 
 flat in vec3 receiver;
-flat in ivec2 gatheredAt;  // the surfel's texel in the receivers' pass
+flat in ivec2 gatheredAt;  // the surfel's texel in the surfel list
 
 uniform bool useGrid;
 uniform sampler3D gridRadiance;  // (B, 1) at kept points, 0 at pruned ones
 uniform vec3 gridOrigin;         // local mm
 uniform float gridSpacing;       // mm
 uniform vec3 gridDims;
-uniform bool gatherAtSurfel;
-uniform sampler2D gathered;  // B of the receivers' pass
-uniform bool addFar;
-uniform sampler2D gatheredFar;  // the far part at the same texels
+uniform sampler2D gathered;      // B per surfel, surfel list layout
 
 //VTK::Output::Dec
 
 void main()
 {
-  vec3 B = gatherAtSurfel ? texelFetch(gathered, gatheredAt, 0).rgb : vec3(0.0);
-  if (addFar)
-  {
-    B += texelFetch(gatheredFar, gatheredAt, 0).rgb;
-  }
+  vec3 B = vec3(0.0);
   if (useGrid)
   {
-    vec4 far = texture(gridRadiance, ((receiver - gridOrigin) / gridSpacing + 0.5) / gridDims);
-    if (far.w > 1e-6)
+    vec4 grid = texture(gridRadiance, ((receiver - gridOrigin) / gridSpacing + 0.5) / gridDims);
+    if (grid.w > 1e-6)
     {
-      B += far.rgb / far.w;
+      B = grid.rgb / grid.w;
     }
+  }
+  else
+  {
+    B = texelFetch(gathered, gatheredAt, 0).rgb;
   }
   gl_FragData[0] = vec4(B, 1.0);
 }

@@ -30,7 +30,7 @@ class GpuVsReference : public ::testing::TestWithParam<ScanCase> {};
 // DESIGN section 7 metric per point. The goal is mean < 0.5 %, p99 < 3 %. The bunny meets the
 // mean; its p99 bar is 5 %: the GPU's own walk error is within 2 % at p99 (opening angle 0.5
 // against 0.2), and what remains sits in shadowed points (B at 1-10 % of the brightest) lit
-// from near the terminator, where the lit texels of the GPU and CPU rasterisers differ; both
+// from near the terminator, where the lit cells of the GPU and CPU rasterisers differ; both
 // methods move by 4.5-6 % at p99 when their texels halve, so a tighter bar needs both on finer
 // maps (the reference at z_r / 8 needs 3.7 GB on the bunny). The dragon misses the mean goal
 // (measured 0.62 % mean, 5.0 % p99 for marble): its thin parts put more receivers in that
@@ -55,11 +55,11 @@ TEST_P(GpuVsReference, MeetsItsBars) {
   const double gpu_seconds = clock.lap();
   ASSERT_EQ(gpu.size(), reference.B.size());
   const ErrorStats e = compare_radiance(gpu, reference.B);
-  std::printf("[ gpu vs reference ] %s %s, %d light(s): %zu surfels, %lld lit texels; mean %.3f %% p99 %.2f %% "
+  std::printf("[ gpu vs reference ] %s %s, %d light(s): %zu surfels, %lld lit cells; mean %.3f %% p99 %.2f %% "
               "max %.1f %% 8-bit mean %.2f max %.0f; GPU steps 1-2 %.2f s (map %.2f s, surfels "
               "%.2f s), reference %.1f s\n",
               GetParam().file, GetParam().material, GetParam().lights, cloud.size(),
-              static_cast<long long>(scene.pass->GetLastLitSamples()), 100 * e.mean, 100 * e.p99,
+              static_cast<long long>(scene.pass->GetLastLitCells()), 100 * e.mean, 100 * e.p99,
               100 * e.max, e.srgb8_mean, e.srgb8_max, gpu_seconds,
               scene.pass->GetLastIlluminationSeconds(), scene.pass->GetLastSurfelSeconds(),
               reference_seconds);

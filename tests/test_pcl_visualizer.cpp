@@ -136,12 +136,12 @@ TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
   std::printf("ketchup: summed B red / blue = %.1f\n", red / blue);
   EXPECT_GT(red, 20.0 * blue);
   handle->setQuality(sss::Quality::Accurate);
-  EXPECT_EQ(handle->pass()->GetKernelStrategy(), vtkSubsurfacePass::SURFEL);
+  EXPECT_EQ(handle->pass()->GetCellSamples(), 32);
   EXPECT_EQ(handle->pass()->GetMaxMapSize(), 4096);
-  EXPECT_EQ(handle->pass()->GetOpeningAngle(), 0.5);
-  handle->setQuality(sss::Quality::Interactive);  // the pass's defaults
+  EXPECT_EQ(handle->pass()->GetOpeningAngle(), 0.3);
+  handle->setQuality(sss::Quality::Balanced);  // the pass's defaults
   vtkNew<vtkSubsurfacePass> defaults;
-  EXPECT_EQ(handle->pass()->GetKernelStrategy(), defaults->GetKernelStrategy());
+  EXPECT_EQ(handle->pass()->GetCellSamples(), defaults->GetCellSamples());
   EXPECT_EQ(handle->pass()->GetMaxMapSize(), defaults->GetMaxMapSize());
   EXPECT_EQ(handle->pass()->GetOpeningAngle(), defaults->GetOpeningAngle());
 

@@ -25,22 +25,19 @@ namespace sss {
 namespace {
 
 struct QualitySettings {
-  int strategy;
+  int cell_samples;
   int max_map;
-  double opening_angle, group_diffusion_lengths;
+  double opening_angle;
 };
 
 QualitySettings settings_of(Quality quality) {
   switch (quality) {
-    case Quality::Interactive: {
-      vtkNew<vtkSubsurfacePass> defaults;
-      return {defaults->GetKernelStrategy(), defaults->GetMaxMapSize(),
-              defaults->GetOpeningAngle(), defaults->GetMaxGroupDiffusionLengths()};
-    }
-    case Quality::Balanced: return {vtkSubsurfacePass::SURFEL, 1024, 0.8, 4.0};
-    case Quality::Accurate: break;
+    case Quality::Interactive: return {8, 1024, 1.0};
+    case Quality::Balanced: break;
+    case Quality::Accurate: return {32, 4096, 0.3};
   }
-  return {vtkSubsurfacePass::SURFEL, 4096, 0.5, 2.0};
+  vtkNew<vtkSubsurfacePass> defaults;
+  return {defaults->GetCellSamples(), defaults->GetMaxMapSize(), defaults->GetOpeningAngle()};
 }
 
 // The renderers PCLVisualizer means by a viewport: all for 0, else the viewport-th one.
@@ -169,10 +166,9 @@ void TranslucentCloud::setQuality(Quality quality) {
   quality_ = quality;
   const QualitySettings q = settings_of(quality);
   for (const auto& pass : passes_) {
-    pass->SetKernelStrategy(q.strategy);
+    pass->SetCellSamples(q.cell_samples);
     pass->SetMaxMapSize(q.max_map);
     pass->SetOpeningAngle(q.opening_angle);
-    pass->SetMaxGroupDiffusionLengths(q.group_diffusion_lengths);
   }
 }
 
@@ -212,8 +208,7 @@ vtkSubsurfacePass* TranslucentCloud::pass() const { return passes_.front(); }
 
 std::string TranslucentCloud::settingsLine() const {
   vtkSubsurfacePass* p = passes_.front();
-  const double B_seconds = p->GetLastIlluminationSeconds() + p->GetLastVirtualPointSeconds() +
-                           p->GetLastSurfelSeconds();
+  const double B_seconds = p->GetLastIlluminationSeconds() + p->GetLastSurfelSeconds();
   const std::string lights = lights_.empty() ? "headlight"
                              : lights_.size() == 1 ? "1 light"
                                                    : std::to_string(lights_.size()) + " lights";

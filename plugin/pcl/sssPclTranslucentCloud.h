@@ -29,17 +29,16 @@ namespace sss {
 // re-runs it), trading accuracy for time. Costs and errors per setting are in
 // docs/benchmark/bench.md.
 enum class Quality {
-  Interactive,  // the pass's defaults (GRID, 512 map, opening angle 2, at most 16384 virtual
-                // points): the paper's cost, 15-30 % mean error, more accurate than the paper
-  Balanced,     // SURFEL, 1024 map, opening angle 0.8, groups of 4 diffusion lengths: 1-3 %
-  Accurate,     // SURFEL, 4096 map, opening angle 0.5, groups of 2: under 1 % mean error
+  Interactive,  // 8 samples per cell, far-field opening angle 1, maps of at most 1024 texels
+  Balanced,     // the pass's defaults (16 samples, opening angle 0.5, 2048 texels)
+  Accurate,     // 32 samples per cell, opening angle 0.3, maps of at most 4096 texels
 };
 const char* qualityName(Quality quality);
 
 struct TranslucentCloudOptions {
   std::string material = "marble";  // a vtkTranslucentMaterial preset
   double millimetres_per_unit = 1.0;
-  Quality quality = Quality::Interactive;  // as the pass's defaults
+  Quality quality = Quality::Balanced;  // the pass's defaults
   SurfelOptions surfels;
   int viewport = 0;  // PCLVisualizer viewport; 0: every renderer of the window
 };
@@ -104,7 +103,7 @@ class TranslucentCloud {
   vtkSmartPointer<vtkTranslucentMaterial> material_;
   std::vector<vtkSmartPointer<vtkSubsurfacePass>> passes_;  // one per renderer
   std::vector<vtkSmartPointer<vtkLight>> lights_;
-  Quality quality_ = Quality::Accurate;
+  Quality quality_ = Quality::Balanced;
   bool attached_ = true;
 };
 

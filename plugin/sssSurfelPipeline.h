@@ -1,0 +1,96 @@
+// Step 2 on the GPU (the NEAR_FAR strategy): each surfel's cell lit through the light maps,
+// the near field from a table the light does not change, the far field by a walk of the lit
+// cells' pyramid. The same model as the CPU reference (core/reference_renderer.h): the bake
+// (cells, the near-field table, the surfel list) runs on the CPU when the geometry, the
+// material or a setting changes; a light move runs three GPU passes per light and one over all.
+#ifndef sssSurfelPipeline_h
+#define sssSurfelPipeline_h
+
+#include "dipole.h"
+#include "local_surfels.h"
+#include "material.h"
+#include "near_far_split.h"
+#include "near_field_quadrature.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace sss
+{
+
+// What step 1 hands to step 2: the light maps (one atlas) and their lights.
+struct LightMapAtlas
+{
+  vtkTextureObject* point = nullptr;   // lifted point of the disc seen
+  vtkTextureObject* normal = nullptr;  // its normal; 0 where no disc
+  struct Map
+  {
+    int x = 0, y = 0, width = 0, height = 0;  // where it lies in the atlas
+    double texel = 0;                         // mm
+    Eigen::Vector3d u, v;                     // image axes, local frame
+    Eigen::Vector2d corner;                   // plane coordinates of its lower-left corner
+    Eigen::Vector3d towards_light;            // unit
+    Rgb irradiance{};
+  };
+  std::vector<Map> maps;
+};
+
+struct SurfelPipelineSettings
+{
+  QuadratureSettings quadrature;  // the near-field table's
+  int cell_samples = 16;          // per cell and light, for its irradiance
+  double opening_angle = 0.5;     // far-field walk
+  double max_group_diffusion_lengths = 2.0;
+};
+
+struct SurfelPipelineReport
+{
+  double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
+  std::size_t near_entries = 0;               // table entries, all receivers
+  std::size_t lit_cells = 0;                  // surfels with light, summed over the lights
+};
+
+class SurfelPipeline
+{
+public:
+  SurfelPipeline();
+  ~SurfelPipeline();
+
+  // The CPU bake and its uploads; `local` must carry its surface fit (and its albedo, or none
+  // for white).
+  bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
+    const SurfelPipelineSettings& settings, SurfelPipelineReport& report, std::string& error);
+
+  // Irradiance, source pyramids and B at every surfel for the given light maps.
+  bool light(vtkOpenGLRenderWindow* window, const LightMapAtlas& maps, bool finish,
+    SurfelPipelineReport& report, std::string& error);
+
+  // B per surfel in the surfel list's layout, and each input surfel's texel in it (a vec2
+  // attribute buffer, input order).
+  vtkTextureObject* radiance() const;
+  vtkOpenGLBufferObject* list_texel() const;
+
+  void release(vtkWindow* window);
+
+private:
+  struct Gpu;
+  std::unique_ptr<Gpu> gpu_;
+};
+
+}
+
+#endif

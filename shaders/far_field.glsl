@@ -1,0 +1,80 @@
+// The far field of eq. 17 at a receiver: a walk of each light's source pyramid (the lit cells,
+// surfel_irradiance_fs.glsl, reduced by pyramid_reduce_fs.glsl) over the cells whose surfel
+// lies farther than farFrom (the near-field table holds the nearer ones whole), taking a group
+// of cells as one source, with its point covariance as a second-order term, once it subtends
+// less than openingAngle seen from x and spans at most maxGroupDiffusionLengths of every
+// channel whose kernel still matters there. The GPU form of the CPU reference's source tree
+// (core/source_tree.h). Needs dipole.glsl.
+
+uniform sampler2D sourcePoint;        // xyz: power-weighted mean point, w: summed power
+uniform sampler2D sourcePower;        // rgb: E dA
+uniform sampler2D sourceNormal;       // xyz: mean normal, w: radius of the group (mm)
+uniform sampler2D sourceCovariance0;  // xx, yy, zz, xy
+uniform sampler2D sourceCovariance1;  // xz, yz
+uniform int sourceLevelCount[SSS_MAX_LIGHTS];
+uniform vec4 sourceLevelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
+uniform float openingAngle;
+uniform float maxGroupDiffusionLengths;
+uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral
+uniform float farFrom;        // mm
+
+vec3 farFieldB(vec3 x)
+{
+  vec3 sum = vec3(0.0);
+  ivec3 stack[64];
+  for (int light = 0; light < lightCount; ++light)
+  {
+    int top = sourceLevelCount[light] - 1;
+    int base = light * SSS_MAX_LEVELS;
+    int depth = 0;
+    stack[depth++] = ivec3(0, 0, top);
+    while (depth > 0)
+    {
+      ivec3 node = stack[--depth];
+      int level = node.z;
+      ivec2 texel = ivec2(sourceLevelRect[base + level].xy) + node.xy;
+      vec4 point = texelFetch(sourcePoint, texel, 0);
+      if (point.w <= 0.0)
+      {
+        continue;
+      }
+      vec4 normal = texelFetch(sourceNormal, texel, 0);
+      float size = normal.w;
+      float d = distance(x, point.xyz);
+      if (d - size > supportRadius || d + size < farFrom || (level == 0 && d < farFrom))
+      {
+        continue;
+      }
+      bool straddles = d - size < farFrom;  // holds cells nearer than farFrom: open it
+      float sTrSignificant = 0.0;  // fastest decay among channels not yet below e^-16
+      for (int c = 0; c < 3; ++c)
+      {
+        if (sTr[c] * (d - size) < 16.0)
+        {
+          sTrSignificant = max(sTrSignificant, sTr[c]);
+        }
+      }
+      bool smallEnough =
+        size < openingAngle * d && size * sTrSignificant < maxGroupDiffusionLengths;
+      if (level == 0 || (smallEnough && !straddles) || depth > 60)
+      {
+        vec3 power = texelFetch(sourcePower, texel, 0).rgb;
+        vec4 c0 = texelFetch(sourceCovariance0, texel, 0);
+        vec4 c1 = texelFetch(sourceCovariance1, texel, 0);
+        mat3 cov = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
+        sum += power * dipoleRdSecondOrder(point.xyz, normal.xyz, cov, x);
+        continue;
+      }
+      ivec2 childSize = ivec2(sourceLevelRect[base + level - 1].zw);
+      for (int k = 3; k >= 0; --k)
+      {
+        ivec2 child = 2 * node.xy + ivec2(k & 1, k >> 1);
+        if (child.x < childSize.x && child.y < childSize.y)
+        {
+          stack[depth++] = ivec3(child, level - 1);
+        }
+      }
+    }
+  }
+  return sum / PI;
+}
