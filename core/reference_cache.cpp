@@ -170,6 +170,7 @@ ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material
   h.add(settings.light_map.texel_per_radius);
   h.add_word(signed_word(settings.light_map.max_map_size));
   h.add_word(signed_word(settings.irradiance_samples));
+  h.add_word(signed_word(settings.irradiance_refined));
   h.add(settings.tree.theta);
   h.add_word(signed_word(settings.tree.leaf_size));
   h.add(settings.tree.kernel_tolerance);

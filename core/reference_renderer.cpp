@@ -1,5 +1,6 @@
 #include "reference_renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -65,7 +66,8 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
                                 receivers_);
   stats_.seconds_geometry = clock.lap();
   maps_ = render_light_maps(surfels_, lights, settings.light_map);
-  E_ = surfel_irradiance(surfels_, area_, material, maps_, settings.irradiance_samples);
+  E_ = surfel_irradiance(surfels_, area_, material, maps_, settings.irradiance_samples,
+                         std::max(settings.irradiance_samples, settings.irradiance_refined));
   E_total_ = total_irradiance(E_, surfels_.size());
   sources_ = cell_sources(surfels_, area_, maps_, E_);
   stats_.seconds_light = clock.lap();

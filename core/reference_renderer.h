@@ -1,7 +1,7 @@
 // The CPU reference: eq. 16 evaluated at every surfel in double precision and in parallel;
 // the ground truth for the GPU path. Each surfel stands for its cell (surfel_cells.h) lit with
-// the irradiance averaged over it (surfel_irradiance.h, 64 samples against a light map of
-// texels an eighth of a disc radius); B = near field + far field, split by NearFarSplit: the
+// the irradiance averaged over it (surfel_irradiance.h, 64 samples, 1024 where an edge crosses
+// the cell, against a light map of texels an eighth of a disc radius); B = near field + far field, split by NearFarSplit: the
 // near field by weights from a fine quadrature on each receiver's local surface
 // (near_field.h), the far field summed over every lit cell by the source tree
 // (source_tree.h), each cell split near the receiver.
@@ -37,7 +37,8 @@ inline QuadratureSettings reference_quadrature() {
 
 struct ReferenceSettings {
   LightMapSettings light_map;
-  int irradiance_samples = 64;  // per cell and light
+  int irradiance_samples = 64;   // per cell and light
+  int irradiance_refined = 1024;  // where those disagree (an edge crosses the cell)
   QuadratureSettings quadrature = reference_quadrature();
   SourceTreeSettings tree;
   // The near field's r0 in mm; 0 takes NearFarSplit::minimum_r0 of the cloud.

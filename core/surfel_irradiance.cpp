@@ -22,10 +22,11 @@ double pattern_rotation(std::size_t index) {
 
 SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vector<double>& area,
                                    const Material& material, const LightMaps& light,
-                                   int samples) {
-  if (area.size() != surfels.size() || samples < 1)
+                                   int samples, int refined) {
+  if (area.size() != surfels.size() || samples < 1 || refined < samples)
     throw std::invalid_argument(
-        "[sss::surfel_irradiance] one cell area per surfel and at least one sample are needed");
+        "[sss::surfel_irradiance] one cell area per surfel, at least one sample and at least as "
+        "many refined ones are needed");
   const std::size_t n = surfels.size();
   const double limit = 1.0 / surfels.radius;
   SurfelIrradiance E(light.size(), std::vector<Rgb>(n, Rgb{0.0, 0.0, 0.0}));
@@ -36,7 +37,7 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
     const long count = static_cast<long>(n);
     std::vector<Rgb>& out = E[li];
 #pragma omp parallel for schedule(dynamic, 256) default(none) \
-    shared(surfels, area, material, light, out, l, irradiance, count, samples, limit, li)
+    shared(surfels, area, material, light, out, l, irradiance, count, samples, refined, limit, li)
     for (long j = 0; j < count; ++j) {
       const double side = surfels.normals[j].dot(l) < 0.0 ? -1.0 : 1.0;
       const Eigen::Vector3d n = side * surfels.normals[j];
@@ -47,22 +48,32 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
       Eigen::Vector3d t1, t2;
       tangent_frame(n, t1, t2);
       const double turn = 2.0 * kPi * pattern_rotation(static_cast<std::size_t>(j));
-      Rgb sum{0.0, 0.0, 0.0};
-      for (int s = 0; s < samples; ++s) {
-        const double rho = cell_radius * std::sqrt((s + 0.5) / samples);
-        const double angle = turn + kGoldenAngle * s;
-        const SurfacePoint y = on_local_surface(
-            surfels.positions[j], n, kappa, rho * (std::cos(angle) * t1 + std::sin(angle) * t2));
-        const double cos_i = y.normal.dot(l);
-        if (!(cos_i > 0.0)) continue;
-        if (!light_reaches(surfels, light.maps[li], light.hits[li], l, y.position, cos_i, thickness))
-          continue;
-        for (int c = 0; c < 3; ++c)
-          sum[c] += fresnel_transmittance(material.eta[c], cos_i) * cos_i;
-      }
+      // Ft cos V summed over `count` points; `lit` counts the points with light.
+      const auto sample = [&](int count, int& lit) {
+        Rgb sum{0.0, 0.0, 0.0};
+        lit = 0;
+        for (int s = 0; s < count; ++s) {
+          const double rho = cell_radius * std::sqrt((s + 0.5) / count);
+          const double angle = turn + kGoldenAngle * s;
+          const SurfacePoint y = on_local_surface(
+              surfels.positions[j], n, kappa, rho * (std::cos(angle) * t1 + std::sin(angle) * t2));
+          const double cos_i = y.normal.dot(l);
+          if (!(cos_i > 0.0)) continue;
+          if (!light_reaches(surfels, light.maps[li], light.hits[li], l, y.position, cos_i,
+                             thickness))
+            continue;
+          ++lit;
+          for (int c = 0; c < 3; ++c)
+            sum[c] += fresnel_transmittance(material.eta[c], cos_i) * cos_i / count;
+        }
+        return sum;
+      };
+      int lit = 0;
+      Rgb sum = sample(samples, lit);
+      if (lit > 0 && lit < samples && refined > samples) sum = sample(refined, lit);
       for (int c = 0; c < 3; ++c) {
         const double albedo = surfels.albedo.empty() ? 1.0 : surfels.albedo[j][c];
-        out[j][c] = irradiance * albedo * sum[c] / samples;
+        out[j][c] = irradiance * albedo * sum[c];
       }
     }
   }

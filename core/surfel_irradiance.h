@@ -3,8 +3,10 @@
 // over S points y_s spread evenly over a disc of the cell's area on the surfel's local
 // surface (local_surface.h), theta_s from the surface's normal there, V(y_s) from the light's
 // map (light_reaches). Shadow edges and the terminator are resolved below the surfel size:
-// a surfel half in shadow gets half its light. The side of a surfel the light sees is lit
-// (scans may hold either orientation). This is the CPU form of shaders/surfel_irradiance_fs.glsl.
+// a surfel half in shadow gets half its light. Where the first S points disagree (an edge
+// crosses the cell), the cell is sampled again with `refined` points. The side of a surfel
+// the light sees is lit (scans may hold either orientation). This is the CPU form of
+// shaders/surfel_irradiance_fs.glsl.
 #pragma once
 
 #include <vector>
@@ -18,11 +20,11 @@ namespace sss {
 // E per light and surfel: E[l][j], per mm^2 of surface.
 using SurfelIrradiance = std::vector<std::vector<Rgb>>;
 
-// `area` from cell_areas; `samples` >= 1 points per cell. Throws std::invalid_argument for
-// sizes that differ or no samples.
+// `area` from cell_areas; `samples` >= 1 points per cell, `refined` >= samples where they
+// disagree. Throws std::invalid_argument for sizes that differ or too few samples.
 SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vector<double>& area,
                                    const Material& material, const LightMaps& light,
-                                   int samples);
+                                   int samples, int refined);
 
 // The sum over the lights, for `surfels` surfels (zero without lights).
 std::vector<Rgb> total_irradiance(const SurfelIrradiance& E, std::size_t surfels);

@@ -445,6 +445,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   SurfelPipelineReport& report, std::string& error)
 {
   Gpu& g = *gpu_;
+  Stopwatch clock;
   const int lights = static_cast<int>(maps.maps.size());
   g.allocate_sources(window, std::max(lights, 1));
   vtkOpenGLState* state = window->GetState();
@@ -484,6 +485,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   irradiance->SetUniformi("fresnelTable", g.fresnel->GetTextureUnit());
   irradiance->SetUniformi("fresnelTableSize", kFresnelTableSize);
   irradiance->SetUniformi("cellSamples", g.settings.cell_samples);
+  irradiance->SetUniformi("cellRefinedSamples", g.settings.cell_refined_samples);
   irradiance->SetUniformf("kappaLimitCell", static_cast<float>(1.0 / g.radius));
   for (int l = 0; l < lights; ++l)
   {
@@ -545,6 +547,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   {
     glFinish();
   }
+  report.seconds_cells = clock.lap();
 
   // B at every surfel: the near field's table, and the far field's walk.
   const std::string gather_fs = Pieces(sss_near_field_fs,
@@ -617,6 +620,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   {
     glFinish();
   }
+  report.seconds_B = clock.lap();
   return true;
 }
 

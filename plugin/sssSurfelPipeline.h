@@ -53,6 +53,7 @@ struct SurfelPipelineSettings
 {
   QuadratureSettings quadrature;  // the near-field table's
   int cell_samples = 16;          // per cell and light, for its irradiance
+  int cell_refined_samples = 128; // where those disagree (an edge crosses the cell)
   double opening_angle = 0.5;     // far-field walk
   double max_group_diffusion_lengths = 2.0;
 };
@@ -62,6 +63,8 @@ struct SurfelPipelineReport
   double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
   std::size_t near_entries = 0;               // table entries, all receivers
   std::size_t lit_cells = 0;                  // surfels with light, summed over the lights
+  // With `finish`: seconds of the lit cells (irradiance and pyramid) and of B (near and far).
+  double seconds_cells = 0, seconds_B = 0;
 };
 
 class SurfelPipeline

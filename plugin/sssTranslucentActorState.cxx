@@ -346,6 +346,8 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
       return false;
     }
     report.lit_cells = step.lit_cells;
+    report.seconds_cells = step.seconds_cells;
+    report.seconds_B = step.seconds_B;
   }
   else if (!run_paper_taps(window, error))
   {

@@ -48,7 +48,8 @@ struct GpuSettings
       max_map_size == o.max_map_size && texel_per_radius == o.texel_per_radius &&
       a.quadrature.rings == b.quadrature.rings && a.quadrature.min_nodes == b.quadrature.min_nodes &&
       a.quadrature.max_nodes == b.quadrature.max_nodes && a.quadrature.radial == b.quadrature.radial &&
-      a.cell_samples == b.cell_samples && a.opening_angle == b.opening_angle &&
+      a.cell_samples == b.cell_samples && a.cell_refined_samples == b.cell_refined_samples &&
+      a.opening_angle == b.opening_angle &&
       a.max_group_diffusion_lengths == b.max_group_diffusion_lengths;
   }
 };
@@ -67,6 +68,7 @@ struct StepReport
 {
   bool bake = false, illumination = false, surfels = false;
   double seconds_bake = 0, seconds_illumination = 0, seconds_surfels = 0;
+  double seconds_cells = 0, seconds_B = 0;  // within seconds_surfels (NEAR_FAR)
   std::size_t lit_cells = 0, virtual_point_count = 0, surfel_count = 0, near_entries = 0;
   int map_width = 0, map_height = 0, grid_level = 0;
   double texel_mm = 0, grid_spacing_mm = 0;

@@ -159,6 +159,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   settings.max_map_size = this->MaxMapSize;
   settings.texel_per_radius = this->TexelPerRadius;
   settings.pipeline.cell_samples = this->CellSamples;
+  settings.pipeline.cell_refined_samples = 8 * this->CellSamples;
   settings.pipeline.opening_angle = this->OpeningAngle;
   settings.pipeline.max_group_diffusion_lengths = this->MaxGroupDiffusionLengths;
   settings.pipeline.quadrature.rings = this->NearFieldRings;
@@ -287,6 +288,8 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
     {
       ++this->SurfelRuns;
       this->LastSurfelSeconds = report.seconds_surfels;
+      this->LastCellSeconds = report.seconds_cells;
+      this->LastRadianceSeconds = report.seconds_B;
       this->LastLitCells = static_cast<vtkIdType>(report.lit_cells);
     }
     this->LastSurfels = static_cast<vtkIdType>(report.surfel_count);

@@ -73,7 +73,10 @@ public:
   ///@}
 
   ///@{
-  /** Points of each cell whose light the map is asked for, per light (default 16). */
+  /**
+   * Points of each cell whose light the map is asked for, per light (default 16); eight times
+   * as many where they disagree (a shadow edge or the terminator crosses the cell).
+   */
   vtkSetClampMacro(CellSamples, int, 1, 256);
   vtkGetMacro(CellSamples, int);
   ///@}
@@ -169,6 +172,9 @@ public:
   vtkGetMacro(LastIlluminationSeconds, double);
   vtkGetMacro(LastSurfelSeconds, double);
   vtkGetMacro(LastViewSeconds, double);
+  /** NEAR_FAR, within LastSurfelSeconds: lighting the cells (with their pyramids), and B. */
+  vtkGetMacro(LastCellSeconds, double);
+  vtkGetMacro(LastRadianceSeconds, double);
   vtkGetMacro(LastLitCells, vtkIdType);
   vtkGetMacro(LastSurfels, vtkIdType);
   vtkGetMacro(LastMapWidth, int);
@@ -219,6 +225,8 @@ protected:
   double LastIlluminationSeconds = 0;
   double LastSurfelSeconds = 0;
   double LastViewSeconds = 0;
+  double LastCellSeconds = 0;
+  double LastRadianceSeconds = 0;
   vtkIdType LastLitCells = 0;
   vtkIdType LastSurfels = 0;
   int LastMapWidth = 0;

@@ -2,12 +2,14 @@
 // Step 2, per surfel and light (core/surfel_irradiance.h is the same on the CPU): the
 // irradiance of eq. 15 averaged over the surfel's cell, E = E_light albedo 1/S Sum_s
 // Ft(eta, theta_s) cos(theta_s) V(y_s) over S points spread over a disc of the cell's area on
-// the surfel's local surface, V from the light's map; and the cell as a source of the far
-// field: its point, power E dA, normal (turned towards the light), radius and covariance, the
-// finest level of that light's source pyramid.
+// the surfel's local surface, V from the light's map, sampled again with more points where the
+// first ones disagree (an edge crosses the cell); and the cell as a source of the far field:
+// its point, power E dA, normal (turned towards the light), radius and covariance, the finest
+// level of that light's source pyramid.
 
 uniform int light;               // which light
 uniform int cellSamples;
+uniform int cellRefinedSamples;
 uniform float kappaLimitCell;    // 1/mm: the curvature clamp of the cell's paraboloid
 
 in vec2 texCoord;  // over the surfel list
@@ -39,20 +41,34 @@ void main()
     vec3 t2 = cross(n, t1);
     float turn = 6.283185307 * fract(sin(dot(vec2(at), vec2(12.9898, 78.233))) * 43758.5453);
     vec3 sum = vec3(0.0);
-    for (int s = 0; s < cellSamples; ++s)
+    int lit = 0;
+    int count = cellSamples;
+    for (int pass = 0; pass < 2; ++pass)
     {
-      float rho = cellRadius * sqrt((float(s) + 0.5) / float(cellSamples));
-      float angle = turn + 2.399963230 * float(s);
-      vec3 d = rho * (cos(angle) * t1 + sin(angle) * t2);
-      vec3 y = point.xyz + d - 0.5 * kappa * dot(d, d) * n;
-      vec3 ny = normalize(n + kappa * d);
-      float cosI = dot(ny, l);
-      if (cosI > 0.0 && lightReaches(light, y, cosI, point.w))
+      sum = vec3(0.0);
+      lit = 0;
+      for (int s = 0; s < count; ++s)
       {
-        sum += fresnelFt(cosI) * cosI;
+        float rho = cellRadius * sqrt((float(s) + 0.5) / float(count));
+        float angle = turn + 2.399963230 * float(s);
+        vec3 d = rho * (cos(angle) * t1 + sin(angle) * t2);
+        vec3 y = point.xyz + d - 0.5 * kappa * dot(d, d) * n;
+        vec3 ny = normalize(n + kappa * d);
+        float cosI = dot(ny, l);
+        if (cosI > 0.0 && lightReaches(light, y, cosI, point.w))
+        {
+          sum += fresnelFt(cosI) * cosI;
+          ++lit;
+        }
       }
+      sum /= float(count);
+      if (lit == 0 || lit == count || cellRefinedSamples <= count)
+      {
+        break;
+      }
+      count = cellRefinedSamples;
     }
-    E = lightIrradiance[light] * texelFetch(surfelAlbedo, at, 0).rgb * sum / float(cellSamples);
+    E = lightIrradiance[light] * texelFetch(surfelAlbedo, at, 0).rgb * sum;
   }
   vec3 power = E * area;
   float weight = power.r + power.g + power.b;
