@@ -4,15 +4,15 @@
 #include <cmath>
 #include <limits>
 
+#include "cell_polygon.h"
 #include "local_surface.h"
+#include "radial_kernel.h"
 #include "surfel_cells.h"
-#include "surfel_irradiance.h"
 
 namespace sss {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kGoldenFraction = 0.6180339887498949;
 
 struct Row {
   std::vector<std::uint32_t> source;
@@ -27,16 +27,6 @@ struct Row {
     weight.push_back(w);
   }
 };
-
-}  // namespace
-
-Rgb NearFieldWeights::B(std::size_t row, const std::vector<Rgb>& E) const {
-  Rgb sum{0.0, 0.0, 0.0};
-  for (std::uint32_t e = first[row]; e < first[row + 1]; ++e)
-    for (int c = 0; c < 3; ++c) sum[c] += weight[e][c] * E[source[e]][c];
-  for (double& v : sum) v /= kPi;
-  return sum;
-}
 
 // Eq. 3 over a cell of area `area` around p (normal n) at the receiver x, with the fraction
 // `keep(r)` of it kept, summed over points spread evenly over a disc of that area.
@@ -64,22 +54,37 @@ Rgb cell_kernel(const Dipole& dipole, const Eigen::Vector3d& p, const Eigen::Vec
   return sum;
 }
 
-NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vector<double>& area,
+}  // namespace
+
+Rgb NearFieldWeights::B(std::size_t row, const std::vector<Rgb>& E) const {
+  Rgb sum{0.0, 0.0, 0.0};
+  for (std::uint32_t e = first[row]; e < first[row + 1]; ++e)
+    for (int c = 0; c < 3; ++c) sum[c] += weight[e][c] * E[source[e]][c];
+  for (double& v : sum) v /= kPi;
+  return sum;
+}
+
+NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCells& cells,
                                     const SurfelIndex& index, const Dipole& dipole,
-                                    const NearFieldQuadrature& quadrature,
-                                    const KernelWindow& window,
+                                    const KernelWindow& window, double reach,
                                     const std::vector<std::size_t>& receivers, bool whole_cells) {
   const std::size_t n = receivers.empty() ? surfels.size() : receivers.size();
   std::vector<Row> rows(n);
   const double r = surfels.radius;
-  const double reach = quadrature.reach();
   const double kappa_limit = 1.0 / reach;
+  // The whole kernel over cells whose surfel lies within the reach (they extend a disc radius
+  // beyond it), or the near part out to the reach; a cell within a disc radius of the reach
+  // can still reach into it.
+  const RadialKernel kernel(dipole, whole_cells ? KernelWindow::all() : window,
+                            whole_cells ? reach + 2.0 * r : reach, kappa_limit);
+  const double cells_within = whole_cells ? reach : reach + r;  // surfels whose cells count
   const long count = static_cast<long>(n);
-#pragma omp parallel default(none) shared(surfels, area, index, dipole, quadrature, window, \
-                                          receivers, rows, count, r, reach, kappa_limit, whole_cells)
+#pragma omp parallel default(none) shared(surfels, cells, index, dipole, window, receivers, rows, \
+                                          count, r, reach, kappa_limit, kernel, cells_within,       \
+                                          whole_cells)
   {
     std::vector<std::size_t> near, other;
-    std::vector<std::pair<double, std::size_t>> same;  // distance from the receiver, index
+    Polygon cell;
 #pragma omp for schedule(dynamic, 64)
     for (long k = 0; k < count; ++k) {
       const std::size_t o = receivers.empty() ? static_cast<std::size_t>(k) : receivers[k];
@@ -87,76 +92,50 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vect
       const Eigen::Vector3d& normal = surfels.normals[o];
       const double kappa = std::clamp(surfels.curvature[o], -kappa_limit, kappa_limit);
       const double thickness = surface_thickness(surfels.roughness[o], surfels.curvature[o], r);
-      index.within(p, reach + r, near);
-      same.clear();
+      index.within(p, cells_within, near);
       other.clear();
-      for (std::size_t j : near) {
-        const double d = (surfels.positions[j] - p).norm();
-        if (j == o || on_same_surface(surfels, o, j, thickness)) same.emplace_back(d, j);
-        else if (d < reach) other.push_back(j);
-      }
-      std::sort(same.begin(), same.end());
       Eigen::Vector3d t1, t2;
       tangent_frame(normal, t1, t2);
-      const double rotation = pattern_rotation(o);
       Row& row = rows[k];
-      const auto& rings = quadrature.rings();
-      for (std::size_t ring_index = 0; ring_index < rings.size(); ++ring_index) {
-        const NearFieldRing& ring = rings[ring_index];
-        const double share = 1.0 / static_cast<double>(ring.radii.size());
-        const double offset = rotation + kGoldenFraction * static_cast<double>(ring_index);
-        for (double rho : ring.radii) {
-          const Rgb bent = NearFieldQuadrature::bend(dipole, rho, kappa);
-          Rgb point;
-          for (int c = 0; c < 3; ++c) point[c] = share * ring.node_weight[c] * bent[c];
-          for (int a = 0; a < ring.nodes; ++a) {
-            const double angle = 2.0 * kPi * (a + offset) / ring.nodes;
-            const Eigen::Vector3d y =
-                on_local_surface(p, normal, kappa, rho * (std::cos(angle) * t1 + std::sin(angle) * t2))
-                    .position;
-            // The nearest surfel of this surface owns the point; candidates are sorted by their
-            // distance d from the receiver, and none with d > 2 |y - p| can beat the receiver.
-            std::size_t owner = std::numeric_limits<std::size_t>::max();
-            double best = r * r;  // a point farther than a disc radius from every surfel: none
-            const double reach_out = 2.0 * rho + 1e-12;
-            for (const auto& [d, j] : same) {
-              if (d > reach_out && owner != std::numeric_limits<std::size_t>::max()) break;
-              const double d2 = (y - surfels.positions[j]).squaredNorm();
-              if (d2 < best || (d2 == best && j < owner)) {
-                best = d2;
-                owner = j;
-              }
-            }
-            if (owner != std::numeric_limits<std::size_t>::max() &&
-                !(whole_cells && (surfels.positions[owner] - p).norm() >= reach))
-              row.add(static_cast<std::uint32_t>(owner), point);
-          }
+      for (std::size_t j : near) {
+        if (j != o && !on_same_surface(surfels, o, j, thickness)) {
+          if ((surfels.positions[j] - p).norm() < reach) other.push_back(j);
+          continue;
         }
+        if (cells.first[j] == cells.first[j + 1]) continue;
+        // Surfel j's cell, from its own tangent frame into the receiver's.
+        Eigen::Vector3d u1, u2;
+        tangent_frame(surfels.normals[j], u1, u2);
+        const Eigen::Vector3d offset = surfels.positions[j] - p;
+        cell.clear();
+        double twice_area = 0.0;
+        for (std::uint32_t v = cells.first[j]; v < cells.first[j + 1]; ++v) {
+          const Eigen::Vector3d x = offset + cells.outline[v].x() * u1 + cells.outline[v].y() * u2;
+          cell.emplace_back(x.dot(t1), x.dot(t2));
+        }
+        for (std::size_t v = 0; v < cell.size(); ++v) {
+          const Eigen::Vector2d& a = cell[v];
+          const Eigen::Vector2d& b = cell[(v + 1) % cell.size()];
+          twice_area += a.x() * b.y() - a.y() * b.x();
+        }
+        if (twice_area < 0.0) std::reverse(cell.begin(), cell.end());
+        const Rgb w = kernel_over(cell, kernel, kappa);
+        if (w[0] > 0.0 || w[1] > 0.0 || w[2] > 0.0) row.add(static_cast<std::uint32_t>(j), w);
       }
       const auto near_part = [&](double d) { return window.weight(d); };
-      const auto far_part = [&](double d) { return 1.0 - window.weight(d); };
       for (std::size_t j : other) {
-        if (!(area[j] > 0.0)) continue;
+        const double area = cells.area[j];
+        if (!(area > 0.0)) continue;
         const Eigen::Vector3d d = p - surfels.positions[j];
         // The other surface's material lies on its side away from the receiver.
         const Eigen::Vector3d nj = surfels.normals[j].dot(d) > 0.0
                                        ? Eigen::Vector3d(-surfels.normals[j])
                                        : surfels.normals[j];
         const Rgb w = whole_cells
-                          ? cell_kernel(dipole, surfels.positions[j], nj, area[j], p,
+                          ? cell_kernel(dipole, surfels.positions[j], nj, area, p,
                                         [](double) { return 1.0; })
-                          : cell_kernel(dipole, surfels.positions[j], nj, area[j], p, near_part);
+                          : cell_kernel(dipole, surfels.positions[j], nj, area, p, near_part);
         row.add(static_cast<std::uint32_t>(j), w);
-      }
-      if (whole_cells) {
-        for (const auto& [d, j] : same) {
-          if (d >= reach || !(area[j] > 0.0)) continue;
-          const Eigen::Vector3d nj = surfels.normals[j].dot(normal) < 0.0
-                                         ? Eigen::Vector3d(-surfels.normals[j])
-                                         : surfels.normals[j];
-          row.add(static_cast<std::uint32_t>(j),
-                  cell_kernel(dipole, surfels.positions[j], nj, area[j], p, far_part));
-        }
       }
     }
   }

@@ -1,16 +1,15 @@
 // Step 2, second part: the near field of eq. 17 at each receiver, as weights on its
 // neighbours' irradiance that the light does not change,
 //   B_near(x_o) = 1/pi Sum_j w_oj E_j,
-// w_oj = the near part of the kernel (NearFieldQuadrature, bent with the surface) integrated
-// over the part of the receiver's local surface (local_surface.h) that surfel j's cell covers:
-// each quadrature node on the receiver's osculating paraboloid belongs to the nearest surfel of
-// that surface within a disc radius of it, or to none (an open edge, a hole). Surfels of other
-// surfaces within the near reach (the far side of a thin part) weigh in with the near part of
-// eq. 3 summed over 32 points of their cell (a disc of its area).
+// w_oj = the near part of the kernel, bent with the surface (radial_kernel.h), integrated
+// exactly over surfel j's cell (surfel_cells.h) projected into the receiver's tangent plane
+// (cell_polygon.h).
+// Where no disc covers the plane (an open edge, a hole), no cell does and no light enters.
+// Surfels of other surfaces within the near reach (the far side of a thin part) weigh in with
+// the near part of eq. 3 summed over 32 points of their cell (a disc of its area).
 // With `whole_cells` (the GPU's table) every cell whose surfel lies within the reach weighs in
-// with all of its kernel: the near part as above plus the far part over 32 points of the
-// cell, and nodes owned by cells beyond the reach are left to the far field, which then sums
-// whole cells beyond the reach and no window (far_field.glsl).
+// with all of its kernel, and the far field sums the cells beyond the reach whole, with no
+// window (far_field.glsl).
 // Computed when the geometry or the material changes; a light move only re-weights it by the
 // new E. Memory: one entry (source index and three weights) per neighbour in reach.
 #pragma once
@@ -23,7 +22,7 @@
 #include "kernel_window.h"
 #include "local_surfels.h"
 #include "material.h"
-#include "near_field_quadrature.h"
+#include "surfel_cells.h"
 #include "surfel_index.h"
 
 namespace sss {
@@ -39,12 +38,11 @@ struct NearFieldWeights {
   Rgb B(std::size_t row, const std::vector<Rgb>& E) const;
 };
 
-// Weights for `receivers` (indices into the surfels; empty: every surfel, in order). `area`
-// from cell_areas; `window` the near part the quadrature was built for.
-NearFieldWeights near_field_weights(const LocalSurfels& surfels, const std::vector<double>& area,
+// Weights for `receivers` (indices into the surfels; empty: every surfel, in order); `window`
+// keeps the near part (All: the whole kernel) out to `reach` mm.
+NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCells& cells,
                                     const SurfelIndex& index, const Dipole& dipole,
-                                    const NearFieldQuadrature& quadrature,
-                                    const KernelWindow& window,
+                                    const KernelWindow& window, double reach,
                                     const std::vector<std::size_t>& receivers = {},
                                     bool whole_cells = false);
 

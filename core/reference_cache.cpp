@@ -174,9 +174,6 @@ ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material
   h.add(settings.tree.theta);
   h.add_word(signed_word(settings.tree.leaf_size));
   h.add(settings.tree.kernel_tolerance);
-  h.add_word(signed_word(settings.quadrature.rings));
-  h.add_word(signed_word(settings.quadrature.min_nodes));
-  h.add_word(signed_word(settings.quadrature.max_nodes));
   h.add(settings.r0_mm);
   h.add_word(settings.receivers.size());
   for (std::size_t i : settings.receivers) h.add_word(i);
@@ -239,7 +236,7 @@ std::optional<SurfelRadiance> load_cached_reference(const std::filesystem::path&
   s.texel_mm = in.real();
   s.map_width = int_of(in.word());
   s.map_height = int_of(in.word());
-  s.near_nodes = in.word();
+  s.near_entries = in.word();
   s.split_r0_mm = in.real();
   s.split_r1_mm = in.real();
   s.seconds_light = in.real();
@@ -272,7 +269,7 @@ void store_cached_reference(const std::filesystem::path& dir, const ReferenceKey
   out.real(s.texel_mm);
   out.word(signed_word(s.map_width));
   out.word(signed_word(s.map_height));
-  out.word(s.near_nodes);
+  out.word(s.near_entries);
   out.real(s.split_r0_mm);
   out.real(s.split_r1_mm);
   out.real(s.seconds_light);

@@ -53,23 +53,22 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
   Stopwatch clock;
   surfels_ = LocalSurfels::from(cloud, material.mm_per_unit);
   index_ = std::make_unique<SurfelIndex>(surfels_.positions);
-  area_ = cell_areas(surfels_, *index_);
+  cells_ = surfel_cells(surfels_, *index_);
   const double r0 = settings.r0_mm > 0.0 ? settings.r0_mm : NearFarSplit::minimum_r0(surfels_.radius);
   split_ = NearFarSplit::choose(dipole_, r0 > 0.0 ? r0 : 1.0, settings.tree.kernel_tolerance);
-  const NearFieldQuadrature quadrature(dipole_, split_.near, split_.reach, settings.quadrature);
   receivers_ = settings.receivers;
   if (receivers_.empty()) {
     receivers_.resize(cloud.size());
     for (std::size_t i = 0; i < receivers_.size(); ++i) receivers_[i] = i;
   }
-  weights_ = near_field_weights(surfels_, area_, *index_, dipole_, quadrature, split_.near,
+  weights_ = near_field_weights(surfels_, cells_, *index_, dipole_, split_.near, split_.reach,
                                 receivers_);
   stats_.seconds_geometry = clock.lap();
   maps_ = render_light_maps(surfels_, lights, settings.light_map);
-  E_ = surfel_irradiance(surfels_, area_, material, maps_, settings.irradiance_samples,
+  E_ = surfel_irradiance(surfels_, cells_.area, material, maps_, settings.irradiance_samples,
                          std::max(settings.irradiance_samples, settings.irradiance_refined));
   E_total_ = total_irradiance(E_, surfels_.size());
-  sources_ = cell_sources(surfels_, area_, maps_, E_);
+  sources_ = cell_sources(surfels_, cells_.area, maps_, E_);
   stats_.seconds_light = clock.lap();
   stats_.surfels = surfels_.size();
   stats_.lit_cells = sources_.size();
@@ -78,7 +77,7 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
     stats_.map_width = maps_.maps[0].width;
     stats_.map_height = maps_.maps[0].height;
   }
-  stats_.near_nodes = static_cast<std::size_t>(quadrature.node_count());
+  stats_.near_entries = weights_.source.size();
   stats_.split_r0_mm = split_.has_far ? split_.far.r0 : 0.0;
   stats_.split_r1_mm = split_.reach;
   if (split_.has_far) {

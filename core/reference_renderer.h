@@ -1,10 +1,10 @@
 // The CPU reference: eq. 16 evaluated at every surfel in double precision and in parallel;
 // the ground truth for the GPU path. Each surfel stands for its cell (surfel_cells.h) lit with
-// the irradiance averaged over it (surfel_irradiance.h, 64 samples, 1024 where an edge crosses
-// the cell, against a light map of texels an eighth of a disc radius); B = near field + far field, split by NearFarSplit: the
-// near field by weights from a fine quadrature on each receiver's local surface
-// (near_field.h), the far field summed over every lit cell by the source tree
-// (source_tree.h), each cell split near the receiver.
+// the irradiance averaged over it (surfel_irradiance.h: 64 samples, 1024 where an edge crosses
+// the cell, against a light map of texels an eighth of a disc radius). B = near field + far
+// field, split by NearFarSplit: the near field by weights integrated exactly over each
+// neighbour's cell on the receiver's local surface (near_field.h), the far field summed over
+// every lit cell by the source tree (source_tree.h), each cell split near the receiver.
 #pragma once
 
 #include <memory>
@@ -15,31 +15,19 @@
 #include "local_surfels.h"
 #include "near_far_split.h"
 #include "near_field.h"
-#include "near_field_quadrature.h"
 #include "progress.h"
 #include "source_tree.h"
+#include "surfel_cells.h"
 #include "surfel_cloud.h"
 #include "surfel_index.h"
 #include "surfel_irradiance.h"
 
 namespace sss {
 
-// The reference's near-field quadrature: refining it further changes B by well under 0.1 %
-// (tests/test_reference.cpp).
-inline QuadratureSettings reference_quadrature() {
-  QuadratureSettings s;
-  s.rings = 24;
-  s.min_nodes = 8;
-  s.max_nodes = 48;
-  s.radial = 4;
-  return s;
-}
-
 struct ReferenceSettings {
   LightMapSettings light_map;
   int irradiance_samples = 64;   // per cell and light
   int irradiance_refined = 1024;  // where those disagree (an edge crosses the cell)
-  QuadratureSettings quadrature = reference_quadrature();
   SourceTreeSettings tree;
   // The near field's r0 in mm; 0 takes NearFarSplit::minimum_r0 of the cloud.
   double r0_mm = 0.0;
@@ -54,7 +42,7 @@ struct RadianceStats {
   std::size_t lit_cells = 0;       // surfels with light, summed over the lights
   double texel_mm = 0.0;           // light-map texel of the first light
   int map_width = 0, map_height = 0;
-  std::size_t near_nodes = 0;      // quadrature nodes per receiver
+  std::size_t near_entries = 0;    // near-field weights, all receivers
   double split_r0_mm = 0.0;        // 0 when the near field takes the whole kernel
   double split_r1_mm = 0.0;        // the near field's reach
   double seconds_geometry = 0, seconds_light = 0, seconds_tree = 0, seconds_surfels = 0;
@@ -86,7 +74,7 @@ class ReferenceSolver {
 
   const std::vector<std::size_t>& receivers() const { return receivers_; }
   const LocalSurfels& surfels() const { return surfels_; }
-  const std::vector<double>& cell_area() const { return area_; }
+  const SurfelCells& cells() const { return cells_; }
   const LightMaps& light_maps() const { return maps_; }
   const SurfelIrradiance& irradiance() const { return E_; }
   const NearFarSplit& split() const { return split_; }
@@ -97,7 +85,7 @@ class ReferenceSolver {
  private:
   LocalSurfels surfels_;
   std::unique_ptr<SurfelIndex> index_;
-  std::vector<double> area_;
+  SurfelCells cells_;
   LightMaps maps_;
   SurfelIrradiance E_;
   std::vector<Rgb> E_total_;

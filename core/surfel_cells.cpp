@@ -1,16 +1,12 @@
 #include "surfel_cells.h"
 
+#include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "cell_polygon.h"
 #include "local_surface.h"
-#include "surfel_irradiance.h"
 
 namespace sss {
-namespace {
-constexpr int kCellSamples = 64;
-constexpr double kGoldenAngle = 2.399963229728653;
-}  // namespace
 
 bool on_same_surface(const LocalSurfels& surfels, std::size_t i, std::size_t j, double thickness) {
   const Eigen::Vector3d& n = surfels.normals[i];
@@ -21,52 +17,72 @@ bool on_same_surface(const LocalSurfels& surfels, std::size_t i, std::size_t j, 
   return std::fabs(height) <= thickness;
 }
 
-std::vector<double> cell_areas(const LocalSurfels& surfels, const SurfelIndex& index) {
+SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index) {
   const std::size_t n = surfels.size();
-  std::vector<double> area(n, 0.0);
   const double r = surfels.radius;
-  const double disc_area = 3.14159265358979323846 * r * r;
+  std::vector<Polygon> cells(n);
   const long count = static_cast<long>(n);
-#pragma omp parallel default(none) shared(surfels, index, area, count, r, disc_area)
+#pragma omp parallel default(none) shared(surfels, index, cells, count, r)
   {
-    std::vector<std::size_t> near, same;
+    std::vector<std::size_t> near;
+    std::vector<std::pair<double, Eigen::Vector2d>> neighbours;  // squared gap, plane point
+    Polygon scratch;
 #pragma omp for schedule(dynamic, 256)
     for (long i = 0; i < count; ++i) {
       const Eigen::Vector3d& p = surfels.positions[i];
-      const Eigen::Vector3d& normal = surfels.normals[i];
-      const double kappa = std::clamp(surfels.curvature[i], -1.0 / r, 1.0 / r);
+      Eigen::Vector3d t1, t2;
+      tangent_frame(surfels.normals[i], t1, t2);
       const double thickness = surface_thickness(surfels.roughness[i], surfels.curvature[i], r);
       index.within(p, 2.0 * r, near);
-      same.clear();
-      for (std::size_t j : near)
-        if (j != static_cast<std::size_t>(i) && on_same_surface(surfels, i, j, thickness))
-          same.push_back(j);
-      Eigen::Vector3d t1, t2;
-      tangent_frame(normal, t1, t2);
-      // Turned per surfel, so that the samples' count of a regular lattice's identical cells
-      // errs in both directions instead of the same one everywhere.
-      const double turn = 6.283185307179586 * pattern_rotation(static_cast<std::size_t>(i));
-      int owned = 0;
-      for (int q = 0; q < kCellSamples; ++q) {
-        const double rho = r * std::sqrt((q + 0.5) / kCellSamples);
-        const double angle = turn + kGoldenAngle * q;
-        const SurfacePoint y = on_local_surface(
-            p, normal, kappa, rho * (std::cos(angle) * t1 + std::sin(angle) * t2));
-        const double own = (y.position - p).squaredNorm();
-        bool mine = true;
-        for (std::size_t j : same) {  // ties (duplicate points) go to the lower index
-          const double other = (y.position - surfels.positions[j]).squaredNorm();
-          if (other < own || (other == own && j < static_cast<std::size_t>(i))) {
-            mine = false;
-            break;
-          }
+      neighbours.clear();
+      Polygon& cell = cells[i];
+      disc_polygon(Eigen::Vector2d::Zero(), r, cell);
+      bool owned = true;
+      for (std::size_t j : near) {
+        if (j == static_cast<std::size_t>(i) || !on_same_surface(surfels, i, j, thickness)) continue;
+        const Eigen::Vector3d d = surfels.positions[j] - p;
+        const Eigen::Vector2d q(d.dot(t1), d.dot(t2));
+        if (q.squaredNorm() == 0.0) {
+          if (j < static_cast<std::size_t>(i)) owned = false;  // a duplicate: the lower index owns
+          continue;
         }
-        if (mine) ++owned;
+        neighbours.emplace_back(q.squaredNorm(), q);
       }
-      area[i] = disc_area * owned / kCellSamples;
+      if (!owned) {
+        cell.clear();
+        continue;
+      }
+      // Nearest neighbours first: once a bisector lies beyond the polygon's farthest corner,
+      // every later one does too.
+      std::sort(neighbours.begin(), neighbours.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      double reach2 = 0.0;
+      for (const Eigen::Vector2d& v : cell) reach2 = std::max(reach2, v.squaredNorm());
+      for (const auto& [gap2, q] : neighbours) {
+        if (0.25 * gap2 >= reach2) break;
+        clip_to_nearer(cell, Eigen::Vector2d::Zero(), q, scratch);
+        if (cell.empty()) break;
+        reach2 = 0.0;
+        for (const Eigen::Vector2d& v : cell) reach2 = std::max(reach2, v.squaredNorm());
+      }
     }
   }
-  return area;
+  SurfelCells out;
+  out.area.resize(n);
+  out.first.resize(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    double twice = 0.0;
+    for (std::size_t k = 0; k < cells[i].size(); ++k) {
+      const Eigen::Vector2d& a = cells[i][k];
+      const Eigen::Vector2d& b = cells[i][(k + 1) % cells[i].size()];
+      twice += a.x() * b.y() - a.y() * b.x();
+    }
+    out.area[i] = 0.5 * twice;
+    out.first[i + 1] = out.first[i] + static_cast<std::uint32_t>(cells[i].size());
+  }
+  out.outline.reserve(out.first[n]);
+  for (const Polygon& c : cells) out.outline.insert(out.outline.end(), c.begin(), c.end());
+  return out;
 }
 
 }  // namespace sss

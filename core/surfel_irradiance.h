@@ -20,7 +20,7 @@ namespace sss {
 // E per light and surfel: E[l][j], per mm^2 of surface.
 using SurfelIrradiance = std::vector<std::vector<Rgb>>;
 
-// `area` from cell_areas; `samples` >= 1 points per cell, `refined` >= samples where they
+// `area` from surfel_cells; `samples` >= 1 points per cell, `refined` >= samples where they
 // disagree. Throws std::invalid_argument for sizes that differ or too few samples.
 SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vector<double>& area,
                                    const Material& material, const LightMaps& light,

@@ -101,7 +101,6 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
                             size over distance, smaller is finer, 0.05 to 2 (default )" << pass->GetOpeningAngle() << R"()
   --group-lengths V         far-field walk: largest source group, in diffusion lengths 1/s_tr
                             of the channels that still matter (default )" << pass->GetMaxGroupDiffusionLengths() << R"()
-  --near-rings N            near-field table: rings of its quadrature (default )" << pass->GetNearFieldRings() << R"()
   --grid-level K            paper: 2^K grid points per axis (default 0: the paper's 64)
   --exposure V              PNG tone mapping: sRGB(clamp(V * Lo)) (default 0: automatic,
                             the 99.5th percentile of the visible Lo maps to white)
@@ -125,7 +124,6 @@ void apply_pass_settings(const Options& o, vtkSubsurfacePass* pass) {
   if (o.cell_samples) pass->SetCellSamples(*o.cell_samples);
   if (o.opening_angle) pass->SetOpeningAngle(*o.opening_angle);
   if (o.group_diffusion_lengths) pass->SetMaxGroupDiffusionLengths(*o.group_diffusion_lengths);
-  if (o.near_rings) pass->SetNearFieldRings(*o.near_rings);
 }
 
 Options parse(int argc, char** argv) {
@@ -198,8 +196,6 @@ Options parse(int argc, char** argv) {
       o.max_map_size = whole(flag, value(), 16, 16384);
     } else if (flag == "--cell-samples") {
       o.cell_samples = whole(flag, value(), 1, 256);
-    } else if (flag == "--near-rings") {
-      o.near_rings = whole(flag, value(), 1, 64);
     } else if (flag == "--texel-per-radius") {
       o.texel_per_radius = number(flag, value());
       if (*o.texel_per_radius < 0.01 || *o.texel_per_radius > 16)

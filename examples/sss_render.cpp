@@ -94,7 +94,6 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"map_height\": " << pass->GetLastMapHeight()
         << ", \"texel_mm\": " << pass->GetLastTexelMillimetres()
         << ", \"cell_samples\": " << pass->GetCellSamples()
-        << ", \"near_field_rings\": " << pass->GetNearFieldRings()
         << ", \"near_reach_mm\": " << pass->GetLastNearReachMillimetres()
         << ", \"far_from_mm\": " << pass->GetLastFarFromMillimetres()
         << ", \"opening_angle\": " << pass->GetOpeningAngle()

@@ -326,14 +326,13 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
   g.support = g.dipole->max_support_radius(kSupportFraction);
   const double r0 = NearFarSplit::minimum_r0(local.radius);
   g.split = NearFarSplit::choose(*g.dipole, r0 > 0.0 ? r0 : 1.0, kSupportFraction);
-  std::vector<double> area;
+  SurfelCells cells;
   NearFieldWeights weights;
   try
   {
     const SurfelIndex index(local.positions);
-    area = cell_areas(local, index);
-    const NearFieldQuadrature quadrature(*g.dipole, g.split.near, g.split.reach, settings.quadrature);
-    weights = near_field_weights(local, area, index, *g.dipole, quadrature, g.split.near, {}, true);
+    cells = surfel_cells(local, index);
+    weights = near_field_weights(local, cells, index, *g.dipole, g.split.near, g.split.reach, {}, true);
   }
   catch (const std::exception& e)
   {
@@ -343,6 +342,7 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
   report.near_reach_mm = g.split.reach;
   report.far_from_mm = g.split.has_far ? g.split.far.r0 : 0.0;
   report.near_entries = weights.source.size();
+  const std::vector<double>& area = cells.area;
 
   // The surfel list: Morton order of position, laid out in 2-D Morton order.
   std::vector<std::size_t> order(n);

@@ -10,7 +10,6 @@
 #include "local_surfels.h"
 #include "material.h"
 #include "near_far_split.h"
-#include "near_field_quadrature.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -51,7 +50,6 @@ struct LightMapAtlas
 
 struct SurfelPipelineSettings
 {
-  QuadratureSettings quadrature;  // the near-field table's
   int cell_samples = 16;          // per cell and light, for its irradiance
   int cell_refined_samples = 128; // where those disagree (an edge crosses the cell)
   double opening_angle = 0.5;     // far-field walk

@@ -46,8 +46,6 @@ struct GpuSettings
     const SurfelPipelineSettings &a = pipeline, &b = o.pipeline;
     return strategy == o.strategy && grid_level == o.grid_level &&
       max_map_size == o.max_map_size && texel_per_radius == o.texel_per_radius &&
-      a.quadrature.rings == b.quadrature.rings && a.quadrature.min_nodes == b.quadrature.min_nodes &&
-      a.quadrature.max_nodes == b.quadrature.max_nodes && a.quadrature.radial == b.quadrature.radial &&
       a.cell_samples == b.cell_samples && a.cell_refined_samples == b.cell_refined_samples &&
       a.opening_angle == b.opening_angle &&
       a.max_group_diffusion_lengths == b.max_group_diffusion_lengths;

@@ -162,10 +162,6 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   settings.pipeline.cell_refined_samples = 8 * this->CellSamples;
   settings.pipeline.opening_angle = this->OpeningAngle;
   settings.pipeline.max_group_diffusion_lengths = this->MaxGroupDiffusionLengths;
-  settings.pipeline.quadrature.rings = this->NearFieldRings;
-  settings.pipeline.quadrature.min_nodes = 8;
-  settings.pipeline.quadrature.max_nodes = std::max(8, 3 * this->NearFieldRings);
-  settings.pipeline.quadrature.radial = 2;
 
   // Steps 1-2 for each translucent actor, where their inputs changed.
   impl.Ready.clear();
@@ -583,7 +579,6 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CellSamples: " << this->CellSamples << "\n";
   os << indent << "OpeningAngle: " << this->OpeningAngle << "\n";
   os << indent << "MaxGroupDiffusionLengths: " << this->MaxGroupDiffusionLengths << "\n";
-  os << indent << "NearFieldRings: " << this->NearFieldRings << "\n";
   os << indent << "GridLevel: " << this->GridLevel << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "CaptureLinearImage: " << this->CaptureLinearImage << "\n";

@@ -95,16 +95,6 @@ public:
   ///@}
 
   ///@{
-  /**
-   * Near-field table: its quadrature's rings on each receiver's local surface (default 16;
-   * each ring holds an equal share of the kernel's near integral, with 8 to 3 x rings nodes
-   * and 2 radii per node). More rings cost bake time and memory, not frame time.
-   */
-  vtkSetClampMacro(NearFieldRings, int, 1, 64);
-  vtkGetMacro(NearFieldRings, int);
-  ///@}
-
-  ///@{
   /** PAPER: 2^GridLevel virtual points per axis (default 0: the paper's 64). */
   vtkSetClampMacro(GridLevel, int, 0, 10);
   vtkGetMacro(GridLevel, int);
@@ -211,7 +201,6 @@ protected:
   int CellSamples = 16;
   double OpeningAngle = 0.5;
   double MaxGroupDiffusionLengths = 2.0;
-  int NearFieldRings = 16;
   int GridLevel = 0;
   double Exposure = 1.0;
   bool CaptureLinearImage = false;

@@ -7,7 +7,7 @@
 #include "camera_view.h"
 #include "fresnel.h"
 #include "procedural_shapes.h"
-#include "near_field_quadrature.h"
+#include "radial_kernel.h"
 #include "reference_renderer.h"
 
 namespace sss {
@@ -118,7 +118,7 @@ TEST(HardCases, DuplicatePointsAndBadNormals) {
 
 // The light lights the side of each surfel it sees, so flipping half the normals of a flat
 // slab changes no radiance. On a sphere the near field's bend with the surface (first order in
-// z kappa, near_field_quadrature.h) follows the side the normal says the material is on, so
+// z kappa, radial_kernel.h) follows the side the normal says the material is on, so
 // there a flipped normal changes B by at most that bend, weighted by the kernel over the near
 // field's reach (1.3 % for marble on a 10 mm sphere).
 TEST(HardCases, InconsistentlyOrientedNormals) {
@@ -143,8 +143,8 @@ TEST(HardCases, InconsistentlyOrientedNormals) {
     double spread = 0.0, total = 0.0;
     for (double rho = 0.0005; rho < reach; rho += 0.001) {
       const double w = ch.Rd(rho) * rho;
-      spread += w * std::fabs(NearFieldQuadrature::bend(dipole, rho, 0.1)[c] -
-                              NearFieldQuadrature::bend(dipole, rho, -0.1)[c]);
+      spread += w * std::fabs(RadialKernel::bend(dipole, rho, 0.1)[c] -
+                              RadialKernel::bend(dipole, rho, -0.1)[c]);
       total += w;
     }
     largest_bend = std::max(largest_bend, spread / total);
@@ -238,9 +238,9 @@ TEST(HardCases, BadLightsAndSettingsAreRefused) {
   ReferenceSettings bad;
   bad.light_map.texel_per_radius = 0.0;
   EXPECT_THROW(render_reference(sphere, m, kTopLight, bad), std::invalid_argument);
-  ReferenceSettings no_rings;
-  no_rings.quadrature.rings = 0;
-  EXPECT_THROW(render_reference(sphere, m, kTopLight, no_rings), std::invalid_argument);
+  ReferenceSettings no_samples;
+  no_samples.irradiance_samples = 0;
+  EXPECT_THROW(render_reference(sphere, m, kTopLight, no_samples), std::invalid_argument);
   ReferenceSettings outside;
   outside.receivers = {sphere.size()};
   EXPECT_THROW(render_reference(sphere, m, kTopLight, outside), std::invalid_argument);

@@ -149,19 +149,17 @@ INSTANTIATE_TEST_SUITE_P(Materials, SamplingInvariance,
                          ::testing::Values("marble", "skimmilk", "ketchup"),
                          [](const auto& info) { return std::string(info.param); });
 
-// Refining the reference's near-field quadrature (twice the rings, twice the nodes) and its
-// light (texels of a sixteenth of a disc radius, 128 samples per cell) moves B by far less
-// than the 0.5 % it is used to judge.
+// Refining the reference's light (texels of a sixteenth of a disc radius, twice the samples per
+// cell) and its far field (a tree opening of 0.05) moves B by far less than the 0.5 % it is
+// used to judge.
 TEST(ReferenceConvergence, RefiningQuadratureAndTexelsChangesLittle) {
   const SurfelCloud torus = make_torus(20.0, 6.0, 0.6);
   for (const char* name : {"marble", "ketchup"}) {
     const Material material = Material::preset(name, 1.3);
     const std::vector<DirectionalLight> light{{Eigen::Vector3d(0.2, 0.5, 1.0), 1.0}};
-    ReferenceSettings base, finer_nodes, finer_texels;
-    base.receivers = finer_nodes.receivers = finer_texels.receivers = sample_of(torus, 1500, 5);
-    finer_nodes.quadrature.rings *= 2;
-    finer_nodes.quadrature.min_nodes *= 2;
-    finer_nodes.quadrature.max_nodes *= 2;
+    ReferenceSettings base, finer_tree, finer_texels;
+    base.receivers = finer_tree.receivers = finer_texels.receivers = sample_of(torus, 1500, 5);
+    finer_tree.tree.theta *= 0.5;
     finer_texels.light_map.texel_per_radius *= 0.5;
     finer_texels.irradiance_samples *= 2;
     auto at_receivers = [&](const ReferenceSettings& s) {
@@ -171,12 +169,12 @@ TEST(ReferenceConvergence, RefiningQuadratureAndTexelsChangesLittle) {
       return B;
     };
     const std::vector<Rgb> a = at_receivers(base);
-    const ErrorStats nodes = compare_radiance(at_receivers(finer_nodes), a);
+    const ErrorStats tree = compare_radiance(at_receivers(finer_tree), a);
     const ErrorStats texels = compare_radiance(at_receivers(finer_texels), a);
-    std::printf("[ reference convergence ] %s torus (%zu points, %.2f mm apart): twice the "
-                "quadrature %s; half the texel, twice the samples %s\n", name, torus.size(), 0.6, nodes.summary().c_str(),
+    std::printf("[ reference convergence ] %s torus (%zu points, %.2f mm apart): "
+                "the tree at half its opening %s; half the texel, twice the samples %s\n", name, torus.size(), 0.6, tree.summary().c_str(),
                 texels.summary().c_str());
-    EXPECT_LT(nodes.mean, 0.005) << name;
+    EXPECT_LT(tree.mean, 0.005) << name;
     EXPECT_LT(texels.mean, 0.005) << name;
   }
 }

@@ -107,7 +107,7 @@ TEST_F(ReferenceCache, ChangingAnyKeyFieldIsAMiss) {
       {"texel per radius", [](Scene& s) { s.settings.light_map.texel_per_radius = 0.25; }},
       {"largest map", [](Scene& s) { s.settings.light_map.max_map_size = 256; }},
       {"samples per cell", [](Scene& s) { s.settings.irradiance_samples = 8; }},
-      {"quadrature rings", [](Scene& s) { s.settings.quadrature.rings = 12; }},
+      {"refined samples", [](Scene& s) { s.settings.irradiance_refined = 256; }},
       {"near-field r0", [](Scene& s) { s.settings.r0_mm = 0.5; }},
       {"receivers", [](Scene& s) { s.settings.receivers = {1, 2, 3}; }},
       {"tree opening", [](Scene& s) { s.settings.tree.theta = 0.2; }},

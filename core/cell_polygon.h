@@ -1,0 +1,30 @@
+// A surfel's cell in a receiver's tangent plane as a convex polygon (its Voronoi cell among
+// the surfels of that surface, within its disc), and the kernel integrated over it exactly:
+// Integral_P K dA = Contour_P G(rho) dtheta (radial_kernel.h), the receiver at the origin,
+// Gauss-Legendre along each edge (8 points where it is seen under a wide angle, else 2).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "material.h"
+#include "radial_kernel.h"
+
+namespace sss {
+
+using Polygon = std::vector<Eigen::Vector2d>;  // counter-clockwise
+
+// The disc of radius r around c as a 24-gon of the disc's area, into `polygon`.
+void disc_polygon(const Eigen::Vector2d& c, double r, Polygon& polygon);
+
+// Keeps the part where normal . x <= offset; `scratch` is reused storage.
+void clip(Polygon& polygon, const Eigen::Vector2d& normal, double offset, Polygon& scratch);
+
+// Keeps the part nearer to `own` than to `other` (their perpendicular bisector).
+void clip_to_nearer(Polygon& polygon, const Eigen::Vector2d& own, const Eigen::Vector2d& other,
+                    Polygon& scratch);
+
+// Integral over the polygon of K at distance rho from the origin, per channel.
+Rgb kernel_over(const Polygon& polygon, const RadialKernel& kernel, double kappa);
+
+}  // namespace sss
