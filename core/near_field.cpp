@@ -28,11 +28,10 @@ struct Row {
   }
 };
 
-// Eq. 3 over a cell of area `area` around p (normal n) at the receiver x, with the fraction
-// `keep(r)` of it kept, summed over points spread evenly over a disc of that area.
-template <typename Keep>
+// Eq. 3 over a cell of area `area` around p (normal n) at the receiver x, summed over points
+// spread evenly over a disc of that area.
 Rgb cell_kernel(const Dipole& dipole, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
-                double area, const Eigen::Vector3d& x, const Keep& keep) {
+                double area, const Eigen::Vector3d& x) {
   constexpr int kPoints = 32;
   constexpr double kGoldenAngle = 2.399963229728653;
   Eigen::Vector3d t1, t2;
@@ -43,11 +42,9 @@ Rgb cell_kernel(const Dipole& dipole, const Eigen::Vector3d& p, const Eigen::Vec
     const double rho = radius * std::sqrt((s + 0.5) / kPoints);
     const double angle = kGoldenAngle * s;
     const Eigen::Vector3d q = p + rho * (std::cos(angle) * t1 + std::sin(angle) * t2);
-    const double k = keep((q - x).norm());
-    if (k <= 0.0) continue;
     for (int c = 0; c < 3; ++c) {
       const DipoleChannel& ch = dipole.channel[c];
-      sum[c] += k * ch.Rd_from_distances((q - ch.z_r * n - x).norm(), (q + ch.z_v * n - x).norm());
+      sum[c] += ch.Rd_from_distances((q - ch.z_r * n - x).norm(), (q + ch.z_v * n - x).norm());
     }
   }
   for (double& v : sum) v *= area / kPoints;
@@ -65,23 +62,17 @@ Rgb NearFieldWeights::B(std::size_t row, const std::vector<Rgb>& E) const {
 }
 
 NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCells& cells,
-                                    const SurfelIndex& index, const Dipole& dipole,
-                                    const KernelWindow& window, double reach,
-                                    const std::vector<std::size_t>& receivers, bool whole_cells) {
+                                    const SurfelIndex& index, const Dipole& dipole, double reach,
+                                    const std::vector<std::size_t>& receivers) {
   const std::size_t n = receivers.empty() ? surfels.size() : receivers.size();
   std::vector<Row> rows(n);
   const double r = surfels.radius;
   const double kappa_limit = 1.0 / reach;
-  // The whole kernel over cells whose surfel lies within the reach (they extend a disc radius
-  // beyond it), or the near part out to the reach; a cell within a disc radius of the reach
-  // can still reach into it.
-  const RadialKernel kernel(dipole, whole_cells ? KernelWindow::all() : window,
-                            whole_cells ? reach + 2.0 * r : reach, kappa_limit);
-  const double cells_within = whole_cells ? reach : reach + r;  // surfels whose cells count
+  // Cells of surfels within the reach extend up to two disc radii beyond it.
+  const RadialKernel kernel(dipole, reach + 2.0 * r, kappa_limit);
   const long count = static_cast<long>(n);
-#pragma omp parallel default(none) shared(surfels, cells, index, dipole, window, receivers, rows, \
-                                          count, r, reach, kappa_limit, kernel, cells_within,       \
-                                          whole_cells)
+#pragma omp parallel default(none) shared(surfels, cells, index, dipole, receivers, rows, count, \
+                                          r, reach, kappa_limit, kernel)
   {
     std::vector<std::size_t> near, other;
     Polygon cell;
@@ -92,14 +83,14 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
       const Eigen::Vector3d& normal = surfels.normals[o];
       const double kappa = std::clamp(surfels.curvature[o], -kappa_limit, kappa_limit);
       const double thickness = surface_thickness(surfels.roughness[o], surfels.curvature[o], r);
-      index.within(p, cells_within, near);
+      index.within(p, reach, near);
       other.clear();
       Eigen::Vector3d t1, t2;
       tangent_frame(normal, t1, t2);
       Row& row = rows[k];
       for (std::size_t j : near) {
         if (j != o && !on_same_surface(surfels, o, j, thickness)) {
-          if ((surfels.positions[j] - p).norm() < reach) other.push_back(j);
+          other.push_back(j);
           continue;
         }
         if (cells.first[j] == cells.first[j + 1]) continue;
@@ -122,7 +113,6 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
         const Rgb w = kernel_over(cell, kernel, kappa);
         if (w[0] > 0.0 || w[1] > 0.0 || w[2] > 0.0) row.add(static_cast<std::uint32_t>(j), w);
       }
-      const auto near_part = [&](double d) { return window.weight(d); };
       for (std::size_t j : other) {
         const double area = cells.area[j];
         if (!(area > 0.0)) continue;
@@ -131,11 +121,7 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
         const Eigen::Vector3d nj = surfels.normals[j].dot(d) > 0.0
                                        ? Eigen::Vector3d(-surfels.normals[j])
                                        : surfels.normals[j];
-        const Rgb w = whole_cells
-                          ? cell_kernel(dipole, surfels.positions[j], nj, area, p,
-                                        [](double) { return 1.0; })
-                          : cell_kernel(dipole, surfels.positions[j], nj, area, p, near_part);
-        row.add(static_cast<std::uint32_t>(j), w);
+        row.add(static_cast<std::uint32_t>(j), cell_kernel(dipole, surfels.positions[j], nj, area, p));
       }
     }
   }

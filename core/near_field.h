@@ -1,17 +1,17 @@
 // Step 2, second part: the near field of eq. 17 at each receiver, as weights on its
 // neighbours' irradiance that the light does not change,
 //   B_near(x_o) = 1/pi Sum_j w_oj E_j,
-// w_oj = the near part of the kernel, bent with the surface (radial_kernel.h), integrated
-// exactly over surfel j's cell (surfel_cells.h) projected into the receiver's tangent plane
-// (cell_polygon.h).
-// Where no disc covers the plane (an open edge, a hole), no cell does and no light enters.
-// Surfels of other surfaces within the near reach (the far side of a thin part) weigh in with
-// the near part of eq. 3 summed over 32 points of their cell (a disc of its area).
-// With `whole_cells` (the GPU's table) every cell whose surfel lies within the reach weighs in
-// with all of its kernel, and the far field sums the cells beyond the reach whole, with no
-// window (far_field.glsl).
+// over the surfels j within the reach (near_far_split.h). For those of the receiver's own
+// surface, w_oj = the kernel, bent with the surface (radial_kernel.h), integrated exactly over
+// j's cell (surfel_cells.h) projected into the receiver's tangent plane (cell_polygon.h): the
+// near field is taken on the receiver's smooth local surface, not on the stack of discs, so
+// scanner noise and the flat discs' overlap above a curved surface do not bias it. Where no
+// disc covers the plane (an open edge, a hole), no cell does and no light enters. Surfels of
+// other surfaces in reach (the far side of a thin part) weigh in with eq. 3 summed over 32
+// points of their cell (a disc of its area). The far field sums the cells beyond the reach.
 // Computed when the geometry or the material changes; a light move only re-weights it by the
-// new E. Memory: one entry (source index and three weights) per neighbour in reach.
+// new E. Memory: one entry (source index and three weights) per neighbour in reach, about 30
+// per receiver (16 bytes each on the GPU).
 #pragma once
 
 #include <cstddef>
@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "dipole.h"
-#include "kernel_window.h"
 #include "local_surfels.h"
 #include "material.h"
 #include "surfel_cells.h"
@@ -38,12 +37,10 @@ struct NearFieldWeights {
   Rgb B(std::size_t row, const std::vector<Rgb>& E) const;
 };
 
-// Weights for `receivers` (indices into the surfels; empty: every surfel, in order); `window`
-// keeps the near part (All: the whole kernel) out to `reach` mm.
+// Weights for `receivers` (indices into the surfels; empty: every surfel, in order) over the
+// surfels within `reach` mm.
 NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCells& cells,
-                                    const SurfelIndex& index, const Dipole& dipole,
-                                    const KernelWindow& window, double reach,
-                                    const std::vector<std::size_t>& receivers = {},
-                                    bool whole_cells = false);
+                                    const SurfelIndex& index, const Dipole& dipole, double reach,
+                                    const std::vector<std::size_t>& receivers = {});
 
 }  // namespace sss

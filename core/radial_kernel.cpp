@@ -28,8 +28,7 @@ Rgb RadialKernel::bend(const Dipole& dipole, double rho, double kappa) {
   return ratio;
 }
 
-RadialKernel::RadialKernel(const Dipole& dipole, const KernelWindow& keep, double rho_max,
-                           double kappa_limit)
+RadialKernel::RadialKernel(const Dipole& dipole, double rho_max, double kappa_limit)
     : rho_max_(rho_max), kappa_limit_(kappa_limit) {
   if (!std::isfinite(rho_max) || !(rho_max > 0.0) || !std::isfinite(kappa_limit) ||
       !(kappa_limit > 0.0)) {
@@ -39,14 +38,12 @@ RadialKernel::RadialKernel(const Dipole& dipole, const KernelWindow& keep, doubl
     throw std::invalid_argument(msg.str());
   }
   step_ = rho_max / kSamples;
-  // The integrand's three parts at r: K0 = keep Rd r, K1 = K0 b1, K2 = K0 b2.
+  // The integrand's three parts at r: K0 = Rd r, K1 = K0 b1, K2 = K0 b2.
   auto parts = [&](double r) {
     std::array<Rgb, 3> k{};
-    const double w = keep.weight(r);
-    if (w <= 0.0) return k;
     const Rgb up = bend(dipole, r, kappa_limit), down = bend(dipole, r, -kappa_limit);
     for (int c = 0; c < 3; ++c) {
-      const double k0 = w * dipole.channel[c].Rd(r) * r;
+      const double k0 = dipole.channel[c].Rd(r) * r;
       k[0][c] = k0;
       k[1][c] = k0 * (up[c] - down[c]) / (2.0 * kappa_limit);
       k[2][c] = k0 * (up[c] + down[c] - 2.0) / (2.0 * kappa_limit * kappa_limit);

@@ -1,18 +1,16 @@
 // The dipole kernel integrated radially on a receiver's local surface, for the exact integral of
-// eq. 17 over a polygon (cell_polygons.h): with K(r) = keep(r) Rd(r) bend(r, kappa),
+// eq. 17 over a polygon (cell_polygon.h): with K(r) = Rd(r) bend(r, kappa),
 //   G(rho) = Integral_0^rho K(r) r dr,   so that   Integral_P K dA = Contour_P G(rho) dtheta
 // around any polygon P in the tangent plane (Green's theorem in polar coordinates, the
-// receiver at the origin). keep is the part of the kernel a window keeps (KernelWindow), and
-// the bend of a surface of mean curvature kappa is fitted as 1 + kappa b1(r) + kappa^2 b2(r)
-// through its exact values at +-kappa_limit (bend()), so G = G0 + kappa G1 + kappa^2 G2, each
-// tabulated finely in rho and read linearly.
+// receiver at the origin). The bend of a surface of mean curvature kappa is fitted as
+// 1 + kappa b1(r) + kappa^2 b2(r) through its exact values at +-kappa_limit (bend()), so
+// G = G0 + kappa G1 + kappa^2 G2, each tabulated finely in rho and read linearly.
 #pragma once
 
 #include <array>
 #include <vector>
 
 #include "dipole.h"
-#include "kernel_window.h"
 #include "material.h"
 
 namespace sss {
@@ -22,7 +20,7 @@ class RadialKernel {
   RadialKernel() = default;
   // Tabulated on [0, rho_max] mm. Throws std::invalid_argument for a rho_max or kappa_limit
   // that is not finite and positive.
-  RadialKernel(const Dipole& dipole, const KernelWindow& keep, double rho_max, double kappa_limit);
+  RadialKernel(const Dipole& dipole, double rho_max, double kappa_limit);
 
   // G per channel at rho (clamped to the table) for curvature kappa (clamped to the limit).
   Rgb G(double rho, double kappa) const;

@@ -174,7 +174,6 @@ ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material
   h.add(settings.tree.theta);
   h.add_word(signed_word(settings.tree.leaf_size));
   h.add(settings.tree.kernel_tolerance);
-  h.add(settings.r0_mm);
   h.add_word(settings.receivers.size());
   for (std::size_t i : settings.receivers) h.add_word(i);
 
@@ -237,8 +236,8 @@ std::optional<SurfelRadiance> load_cached_reference(const std::filesystem::path&
   s.map_width = int_of(in.word());
   s.map_height = int_of(in.word());
   s.near_entries = in.word();
-  s.split_r0_mm = in.real();
-  s.split_r1_mm = in.real();
+  s.near_reach_mm = in.real();
+  s.far_field = in.word() != 0;
   s.seconds_light = in.real();
   s.seconds_tree = in.real();
   s.seconds_geometry = in.real();
@@ -270,8 +269,8 @@ void store_cached_reference(const std::filesystem::path& dir, const ReferenceKey
   out.word(signed_word(s.map_width));
   out.word(signed_word(s.map_height));
   out.word(s.near_entries);
-  out.real(s.split_r0_mm);
-  out.real(s.split_r1_mm);
+  out.real(s.near_reach_mm);
+  out.word(s.far_field ? 1 : 0);
   out.real(s.seconds_light);
   out.real(s.seconds_tree);
   out.real(s.seconds_geometry);

@@ -16,13 +16,13 @@
 namespace sss {
 
 // Raise when the file layout or what render_reference computes changes: old files then miss.
-constexpr std::uint32_t kReferenceCacheVersion = 4;
+constexpr std::uint32_t kReferenceCacheVersion = 5;
 
 // What identifies one reference result.
 struct ReferenceKey {
   // FNV-1a over the cloud (positions, normals, albedo, radius), the material (sigma_a,
   // sigma_s', eta, mm per unit), the lights in order (direction, irradiance), every field of
-  // ReferenceSettings that changes the result (light map, samples, tree, r0 and
+  // ReferenceSettings that changes the result (light map, samples, tree and
   // the receivers asked for), and kReferenceCacheVersion.
   std::uint64_t hash = 0;
   std::size_t surfels = 0;  // a stored file must hold exactly this many values of B

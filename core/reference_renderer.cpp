@@ -54,15 +54,14 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
   surfels_ = LocalSurfels::from(cloud, material.mm_per_unit);
   index_ = std::make_unique<SurfelIndex>(surfels_.positions);
   cells_ = surfel_cells(surfels_, *index_);
-  const double r0 = settings.r0_mm > 0.0 ? settings.r0_mm : NearFarSplit::minimum_r0(surfels_.radius);
-  split_ = NearFarSplit::choose(dipole_, r0 > 0.0 ? r0 : 1.0, settings.tree.kernel_tolerance);
+  split_ = NearFarSplit::choose(dipole_, surfels_.radius > 0.0 ? surfels_.radius : 1.0,
+                                settings.tree.kernel_tolerance);
   receivers_ = settings.receivers;
   if (receivers_.empty()) {
     receivers_.resize(cloud.size());
     for (std::size_t i = 0; i < receivers_.size(); ++i) receivers_[i] = i;
   }
-  weights_ = near_field_weights(surfels_, cells_, *index_, dipole_, split_.near, split_.reach,
-                                receivers_);
+  weights_ = near_field_weights(surfels_, cells_, *index_, dipole_, split_.reach, receivers_);
   stats_.seconds_geometry = clock.lap();
   maps_ = render_light_maps(surfels_, lights, settings.light_map);
   E_ = surfel_irradiance(surfels_, cells_.area, material, maps_, settings.irradiance_samples,
@@ -78,8 +77,8 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
     stats_.map_height = maps_.maps[0].height;
   }
   stats_.near_entries = weights_.source.size();
-  stats_.split_r0_mm = split_.has_far ? split_.far.r0 : 0.0;
-  stats_.split_r1_mm = split_.reach;
+  stats_.near_reach_mm = split_.reach;
+  stats_.far_field = split_.has_far;
   if (split_.has_far) {
     tree();
     stats_.seconds_tree = clock.lap();
@@ -98,15 +97,14 @@ Rgb ReferenceSolver::near_B(std::size_t k) const { return weights_.B(k, E_total_
 Rgb ReferenceSolver::B(std::size_t k) const {
   Rgb b = near_B(k);
   if (split_.has_far) {
-    const Rgb far = tree().B(surfels_.positions[receivers_[k]], split_.far);
+    const Rgb far = tree().B(surfels_.positions[receivers_[k]], split_.reach);
     for (int c = 0; c < 3; ++c) b[c] += far[c];
   }
   return b;
 }
 
-Rgb ReferenceSolver::sources_B_at(const Eigen::Vector3d& scene_point,
-                                  const KernelWindow& window) const {
-  return tree().B(surfels_.frame.to_mm(scene_point), window);
+Rgb ReferenceSolver::sources_B_at(const Eigen::Vector3d& scene_point, double beyond) const {
+  return tree().B(surfels_.frame.to_mm(scene_point), beyond);
 }
 
 SurfelRadiance render_reference(const SurfelCloud& cloud, const Material& material,

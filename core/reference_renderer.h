@@ -4,7 +4,7 @@
 // the cell, against a light map of texels an eighth of a disc radius). B = near field + far
 // field, split by NearFarSplit: the near field by weights integrated exactly over each
 // neighbour's cell on the receiver's local surface (near_field.h), the far field summed over
-// every lit cell by the source tree (source_tree.h), each cell split near the receiver.
+// the lit cells beyond by the source tree (source_tree.h), each cell split near the receiver.
 #pragma once
 
 #include <memory>
@@ -29,8 +29,6 @@ struct ReferenceSettings {
   int irradiance_samples = 64;   // per cell and light
   int irradiance_refined = 1024;  // where those disagree (an edge crosses the cell)
   SourceTreeSettings tree;
-  // The near field's r0 in mm; 0 takes NearFarSplit::minimum_r0 of the cloud.
-  double r0_mm = 0.0;
   // Empty: B at every surfel. Otherwise only at these surfels (indices into the validated
   // cloud); the others are NaN. Large scans are compared on a sample of their points.
   std::vector<std::size_t> receivers;
@@ -43,8 +41,8 @@ struct RadianceStats {
   double texel_mm = 0.0;           // light-map texel of the first light
   int map_width = 0, map_height = 0;
   std::size_t near_entries = 0;    // near-field weights, all receivers
-  double split_r0_mm = 0.0;        // 0 when the near field takes the whole kernel
-  double split_r1_mm = 0.0;        // the near field's reach
+  double near_reach_mm = 0.0;      // the near field's table holds the cells within it
+  bool far_field = false;          // whether cells beyond it matter
   double seconds_geometry = 0, seconds_light = 0, seconds_tree = 0, seconds_surfels = 0;
 };
 
@@ -68,9 +66,9 @@ class ReferenceSolver {
   Rgb B(std::size_t k) const;
   // The near field alone at the k-th receiver.
   Rgb near_B(std::size_t k) const;
-  // The lit cells alone, summed by the source tree over the part of the kernel `window`
-  // keeps, at a point in scene units (the far field's sum, open to tests).
-  Rgb sources_B_at(const Eigen::Vector3d& scene_point, const KernelWindow& window) const;
+  // The lit cells alone, summed by the source tree over those farther than `beyond` mm, at a
+  // point in scene units (the far field's sum, open to tests).
+  Rgb sources_B_at(const Eigen::Vector3d& scene_point, double beyond = 0.0) const;
 
   const std::vector<std::size_t>& receivers() const { return receivers_; }
   const LocalSurfels& surfels() const { return surfels_; }

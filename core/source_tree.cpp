@@ -157,8 +157,7 @@ void SourceTree::add_node(const Node& node, const Eigen::Vector3d& x, Rgb& sum) 
   }
 }
 
-void SourceTree::add_sample(int k, const Eigen::Vector3d& x, const KernelWindow& window,
-                            Rgb& sum) const {
+void SourceTree::add_sample(int k, const Eigen::Vector3d& x, Rgb& sum) const {
   const Eigen::Vector3d& p = position_[k];
   const Eigen::Vector3d& n = normal_[k];
   const double distance = (p - x).norm();
@@ -176,18 +175,16 @@ void SourceTree::add_sample(int k, const Eigen::Vector3d& x, const KernelWindow&
     const double rho = pieces == 1 ? 0.0 : radius * std::sqrt((s + 0.5) / pieces);
     const double angle = kGoldenAngle * s;
     const Eigen::Vector3d q = p + rho * (std::cos(angle) * u + std::sin(angle) * v);
-    const double w = share * window.weight((q - x).norm());
-    if (w == 0.0) continue;
     for (int c = 0; c < 3; ++c) {
       const DipoleChannel& ch = dipole_.channel[c];
       const double d_r = (q - ch.z_r * n - x).norm();
       const double d_v = (q + ch.z_v * n - x).norm();
-      sum[c] += w * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
+      sum[c] += share * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
     }
   }
 }
 
-Rgb SourceTree::B(const Eigen::Vector3d& x, const KernelWindow& window) const {
+Rgb SourceTree::B(const Eigen::Vector3d& x, double beyond) const {
   Rgb sum{0.0, 0.0, 0.0};
   if (nodes_.empty()) return sum;
   int stack[kMaxDepth + 2];
@@ -199,18 +196,12 @@ Rgb SourceTree::B(const Eigen::Vector3d& x, const KernelWindow& window) const {
     const double near_gap = outside.norm();
     if (near_gap > cutoff_) continue;
     const double far_gap = (node.hi - x).cwiseAbs().cwiseMax((node.lo - x).cwiseAbs()).norm();
-    bool whole = true;  // the window weight is the same (and 1) over the whole node
-    if (window.part == KernelWindow::Part::Near) {
-      if (near_gap >= window.r1) continue;
-      whole = far_gap <= window.r0;
-    } else if (window.part == KernelWindow::Part::Far) {
-      if (far_gap <= window.r0) continue;
-      whole = near_gap >= window.r1;
-    }
-    if (whole && well_separated(node, x)) {
+    if (far_gap < beyond) continue;  // every source of the node is nearer than `beyond`
+    if (near_gap >= beyond && well_separated(node, x)) {
       add_node(node, x, sum);
     } else if (node.left < 0) {
-      for (int k = node.first; k < node.last; ++k) add_sample(k, x, window, sum);
+      for (int k = node.first; k < node.last; ++k)
+        if (!((position_[k] - x).norm() < beyond)) add_sample(k, x, sum);
     } else {
       stack[top++] = node.left;
       stack[top++] = node.right;

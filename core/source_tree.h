@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "dipole.h"
-#include "kernel_window.h"
 #include "material.h"
 
 namespace sss {
@@ -39,8 +38,9 @@ class SourceTree {
   // Throws std::invalid_argument for a bad setting or arrays of different sizes.
   SourceTree(const PointSources& sources, const Dipole& dipole, const SourceTreeSettings& settings);
 
-  // B(x) = 1/pi Sum E dA Rd(x_i, x) (eq. 17) over the part of the kernel the window keeps.
-  Rgb B(const Eigen::Vector3d& x, const KernelWindow& window = KernelWindow::all()) const;
+  // B(x) = 1/pi Sum E dA Rd(x_i, x) (eq. 17) over the sources whose point lies `beyond` mm or
+  // farther from x (0: all of them).
+  Rgb B(const Eigen::Vector3d& x, double beyond = 0.0) const;
 
   std::size_t node_count() const { return nodes_.size(); }
   double cutoff_radius() const { return cutoff_; }
@@ -63,7 +63,7 @@ class SourceTree {
   int build(int first, int last, int depth);
   bool well_separated(const Node& node, const Eigen::Vector3d& x) const;
   void add_node(const Node& node, const Eigen::Vector3d& x, Rgb& sum) const;
-  void add_sample(int k, const Eigen::Vector3d& x, const KernelWindow& window, Rgb& sum) const;
+  void add_sample(int k, const Eigen::Vector3d& x, Rgb& sum) const;
 
   std::vector<Eigen::Vector3d> position_, normal_;
   std::vector<Rgb> power_;

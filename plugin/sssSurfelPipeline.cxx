@@ -324,15 +324,14 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
   g.radius = local.radius;
   g.dipole = std::make_unique<Dipole>(material);
   g.support = g.dipole->max_support_radius(kSupportFraction);
-  const double r0 = NearFarSplit::minimum_r0(local.radius);
-  g.split = NearFarSplit::choose(*g.dipole, r0 > 0.0 ? r0 : 1.0, kSupportFraction);
+  g.split = NearFarSplit::choose(*g.dipole, local.radius > 0.0 ? local.radius : 1.0, kSupportFraction);
   SurfelCells cells;
   NearFieldWeights weights;
   try
   {
     const SurfelIndex index(local.positions);
     cells = surfel_cells(local, index);
-    weights = near_field_weights(local, cells, index, *g.dipole, g.split.near, g.split.reach, {}, true);
+    weights = near_field_weights(local, cells, index, *g.dipole, g.split.reach);
   }
   catch (const std::exception& e)
   {
@@ -340,7 +339,7 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
     return false;
   }
   report.near_reach_mm = g.split.reach;
-  report.far_from_mm = g.split.has_far ? g.split.far.r0 : 0.0;
+  report.far_from_mm = g.split.has_far ? g.split.reach : 0.0;
   report.near_entries = weights.source.size();
   const std::vector<double>& area = cells.area;
 

@@ -5,7 +5,6 @@
 #include "sss_dipole.h"
 #include "sss_gather_paper.h"
 #include "sss_illumination_fs.h"
-#include "sss_kernel_window.h"
 #include "sss_light_maps.h"
 #include "sss_paper_taps_fs.h"
 #include "sss_surfel_gs.h"
@@ -667,8 +666,8 @@ bool TranslucentActorState::run_paper_taps(vtkOpenGLRenderWindow* window, std::s
 {
   Gpu& g = *gpu_;
   const VirtualGrid& grid = *g.grid;
-  const std::string gather = std::string(sss_light_maps) + "\n" + sss_kernel_window + "\n" +
-    sss_dipole + "\n" + sss_gather_paper;
+  const std::string gather =
+    std::string(sss_light_maps) + "\n" + sss_dipole + "\n" + sss_gather_paper;
   const std::string fs = WithPieces(sss_paper_taps_fs, gather);
   vtkShaderProgram* taps = ready_quad(g.taps_quad, window, fs.c_str());
   if (!taps)
@@ -697,7 +696,6 @@ bool TranslucentActorState::run_paper_taps(vtkOpenGLRenderWindow* window, std::s
     taps->SetUniform3f("zV", zv);
     taps->SetUniform3f("sTr", str);
     taps->SetUniform3f("rdFactor", factor);
-    taps->SetUniformi("windowPart", 0);
     std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f), texel(kMaxLights, 0.0f),
       axis_u(3 * kMaxLights, 0.0f), axis_v(3 * kMaxLights, 0.0f), corner(2 * kMaxLights, 0.0f);
     for (std::size_t l = 0; l < atlas.maps.size(); ++l)

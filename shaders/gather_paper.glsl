@@ -1,7 +1,7 @@
 // The paper's kernel: B(x) of eq. 17 from 49 taps, Gaussian-distributed over a 40 x 40 texel
 // window of each light's map around the texel x projects to. Each tap is weighted by the
 // inverse of its sampling density, so the taps estimate the window's sum; nothing outside the
-// window is counted. Needs light_maps.glsl, dipole.glsl and kernel_window.glsl.
+// window is counted. Needs light_maps.glsl and dipole.glsl.
 
 uniform vec3 paperTaps[49];               // offset in texels (xy), weight (z)
 
@@ -27,8 +27,7 @@ vec3 gatherB(vec3 x)
       }
       vec3 normal = texelFetch(mapNormal, rect.xy + texel, 0).xyz;
       vec3 power = texelFetch(mapPower, rect.xy + texel, 0).rgb;
-      sum += paperTaps[k].z * power * dipoleRd(point.xyz, normal, x) *
-        kernelWindow(distance(x, point.xyz));
+      sum += paperTaps[k].z * power * dipoleRd(point.xyz, normal, x);
     }
   }
   return sum / PI;

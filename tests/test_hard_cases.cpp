@@ -137,7 +137,7 @@ TEST(HardCases, InconsistentlyOrientedNormals) {
   const SurfelRadiance b = render_reference(flipped, m, kTopLight, quick());
   double largest_bend = 0.0;
   const Dipole dipole(m);
-  const double reach = 2.0 * NearFarSplit::minimum_r0(sphere.radius);
+  const double reach = NearFarSplit::choose(dipole, sphere.radius, 1e-7).reach;
   for (int c = 0; c < 3; ++c) {
     const DipoleChannel& ch = dipole.channel[c];
     double spread = 0.0, total = 0.0;

@@ -56,8 +56,8 @@ TEST_P(SphereClosedForm, FiveMetreSphereMeetsTheLocalClosedForm) {
   }
   const ErrorStats e = compare_radiance(got, expected);
   std::printf("[ reference sphere ] %s, R 5 m, %zu points %.1f mm apart (discs %.1f mm), "
-              "split %.1f-%.1f mm: against Ft cos R_total / pi %s\n", GetParam(), sphere.size(),
-              sphere.mean_spacing(), sphere.radius, r.stats.split_r0_mm, r.stats.split_r1_mm,
+              "near field to %.1f mm: against Ft cos R_total / pi %s\n", GetParam(), sphere.size(),
+              sphere.mean_spacing(), sphere.radius, r.stats.near_reach_mm,
               e.summary().c_str());
   EXPECT_LT(e.mean, 0.01);
   EXPECT_LT(e.p99, 0.05);

@@ -108,7 +108,6 @@ TEST_F(ReferenceCache, ChangingAnyKeyFieldIsAMiss) {
       {"largest map", [](Scene& s) { s.settings.light_map.max_map_size = 256; }},
       {"samples per cell", [](Scene& s) { s.settings.irradiance_samples = 8; }},
       {"refined samples", [](Scene& s) { s.settings.irradiance_refined = 256; }},
-      {"near-field r0", [](Scene& s) { s.settings.r0_mm = 0.5; }},
       {"receivers", [](Scene& s) { s.settings.receivers = {1, 2, 3}; }},
       {"tree opening", [](Scene& s) { s.settings.tree.theta = 0.2; }},
       {"tree leaf size", [](Scene& s) { s.settings.tree.leaf_size = 16; }},

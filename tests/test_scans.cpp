@@ -21,10 +21,10 @@ SurfelCloud load_or_skip(const char* name) {
 
 void print_stats(const char* label, const RadianceStats& s) {
   std::printf("[ scan ] %s: %zu surfels, %zu lit cells, texel %.3f mm (%dx%d map), "
-              "near field to %.2f mm (%zu weights), far field from %.2f mm; %.1f s geometry + "
+              "near field to %.2f mm (%zu weights), far field %s; %.1f s geometry + "
               "%.1f s light + %.1f s tree + %.1f s surfels\n",
               label, s.surfels, s.lit_cells, s.texel_mm, s.map_width, s.map_height,
-              s.split_r1_mm, s.near_entries, s.split_r0_mm, s.seconds_geometry,
+              s.near_reach_mm, s.near_entries, s.far_field ? "beyond" : "none", s.seconds_geometry,
               s.seconds_light, s.seconds_tree, s.seconds_surfels);
 }
 

@@ -38,9 +38,9 @@ void expect_closed_form(const Material& material, double spacing,
     const double expected = Ft0 * E * Ft0 * dipole.channel[c].total_diffuse_reflectance() / M_PI;
     const double Lo = Ft0 * B[c];
     EXPECT_NEAR(Lo / expected, 1.0, 0.01) << label << " channel " << c;
-    std::printf("[ slab ] %-9s spacing %8.3f mm texel %.3f mm split %.2f-%.2f mm channel %d: "
-                "Lo %.6g closed form %.6g (%+.4f %%)\n", label, spacing, solver.stats().texel_mm,
-                solver.stats().split_r0_mm, solver.stats().split_r1_mm, c, Lo, expected,
+    std::printf("[ slab ] %-9s spacing %8.3f mm texel %.3f mm near field to %.2f mm%s channel "
+                "%d: Lo %.6g closed form %.6g (%+.4f %%)\n", label, spacing, solver.stats().texel_mm,
+                solver.stats().near_reach_mm, solver.stats().far_field ? "" : " (all)", c, Lo, expected,
                 100 * (Lo / expected - 1));
   }
 }
