@@ -1,5 +1,6 @@
 #include "cell_polygon.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sss {
@@ -77,6 +78,49 @@ Rgb kernel_over(const Polygon& polygon, const RadialKernel& kernel, double kappa
       const Rgb G = kernel.G(std::sqrt(r2), kappa);
       const double w = 0.5 * weight * cross / r2;
       for (int c = 0; c < 3; ++c) sum[c] += w * G[c];
+    }
+  }
+  return sum;
+}
+
+namespace {
+
+// Integral_0^rho z (1 + s d) e^(-s d) / d^3 r dr, d = max(sqrt(r^2 + a^2), z): the term is
+// constant where the clamp holds (r < sqrt(z^2 - a^2)), -z e^(-s d) / d beyond.
+double pole_integral(double z, double s, double a, double rho) {
+  const double flat = z * z > a * a ? std::sqrt(z * z - a * a) : 0.0;
+  const double inner = std::min(rho, flat);
+  double sum = (1.0 + s * z) * std::exp(-s * z) / (z * z) * 0.5 * inner * inner;
+  if (rho > flat) {
+    const double d0 = std::sqrt(flat * flat + a * a), d1 = std::sqrt(rho * rho + a * a);
+    sum += z * (std::exp(-s * d0) / d0 - std::exp(-s * d1) / d1);
+  }
+  return sum;
+}
+
+}  // namespace
+
+Rgb dipole_over(const Polygon& polygon, const Dipole& dipole, double height) {
+  Rgb sum{0.0, 0.0, 0.0};
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    if (cross == 0.0) continue;
+    for (int g = 0; g < 8; ++g) {
+      const Eigen::Vector2d x = a + 0.5 * (kGaussX[g] + 1.0) * (b - a);
+      const double r2 = x.squaredNorm();
+      if (!(r2 > 0.0)) continue;
+      const double rho = std::sqrt(r2);
+      const double w = 0.5 * kGaussW[g] * cross / r2;
+      for (int c = 0; c < 3; ++c) {
+        const DipoleChannel& ch = dipole.channel[c];
+        // The real pole z_r under the sources, the virtual one z_v above them.
+        const double G = ch.alpha_prime / (4.0 * kPi) *
+                         (pole_integral(ch.z_r, ch.s_tr, height + ch.z_r, rho) +
+                          pole_integral(ch.z_v, ch.s_tr, height - ch.z_v, rho));
+        sum[c] += w * G;
+      }
     }
   }
   return sum;

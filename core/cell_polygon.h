@@ -27,4 +27,11 @@ void clip_to_nearer(Polygon& polygon, const Eigen::Vector2d& own, const Eigen::V
 // Integral over the polygon of K at distance rho from the origin, per channel.
 Rgb kernel_over(const Polygon& polygon, const RadialKernel& kernel, double kappa);
 
+// Integral of eq. 3 over a polygon of sources in their plane (normal out of the material) at a
+// receiver `height` above that plane along the normal (the origin is the receiver's foot):
+// G(rho) = Integral_0^rho Rd r dr in closed form, since with d^2 = r^2 + a^2,
+// Integral z (1 + s d) e^(-s d) / d^3 r dr = -z e^(-s d) / d (a: the pole's height off the
+// receiver; distances clamped at their planar minima as in DipoleChannel::Rd_from_distances).
+Rgb dipole_over(const Polygon& polygon, const Dipole& dipole, double height);
+
 }  // namespace sss

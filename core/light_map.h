@@ -25,7 +25,9 @@ struct DirectionalLight {
 struct LightMapSettings {
   // Texel edge over the disc radius: a surfel's cell is then several texels across, so the
   // fraction of it the light reaches (surfel_irradiance.h) is resolved below the surfel size.
-  double texel_per_radius = 0.125;
+  // Halving a sixteenth moves the dragon's B (marble, 200 mm) by 0.15 % mean, 3 % at p99;
+  // halving an eighth moved it by 0.39 % and 7.6 %, in cells that thin parts shadow.
+  double texel_per_radius = 0.0625;
   // Largest map side; a larger scene gets coarser texels.
   int max_map_size = 4096;
 };

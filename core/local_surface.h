@@ -4,8 +4,8 @@
 //   x(d) = p + d - kappa |d|^2 / 2 n,   n(d) = normalize(n + kappa d),
 // for an offset d in the tangent plane. Flat discs overlap above a curved surface by up to
 // kappa r^2 / 2 and scanner noise stacks them further; taking the near field on this surface
-// instead makes it independent of how the surface was sampled. shaders/local_surface.glsl is
-// the same on the GPU.
+// instead makes it independent of how the surface was sampled. The GPU evaluates the same
+// surface where it samples a cell's light (surfel_irradiance_fs.glsl).
 #pragma once
 
 #include <Eigen/Core>
@@ -26,8 +26,7 @@ inline SurfacePoint on_local_surface(const Eigen::Vector3d& p, const Eigen::Vect
 }
 
 // A tangent frame of n, the same for n and -n (so that a flipped normal lays out the same
-// points) and on the CPU and the GPU (shaders/local_surface.glsl): t1 from the normal turned
-// to have its largest component positive, t2 = n x t1.
+// points): t1 from the normal turned to have its largest component positive, t2 = n x t1.
 inline void tangent_frame(const Eigen::Vector3d& n, Eigen::Vector3d& t1, Eigen::Vector3d& t2) {
   int axis;
   n.cwiseAbs().maxCoeff(&axis);

@@ -28,29 +28,6 @@ struct Row {
   }
 };
 
-// Eq. 3 over a cell of area `area` around p (normal n) at the receiver x, summed over points
-// spread evenly over a disc of that area.
-Rgb cell_kernel(const Dipole& dipole, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
-                double area, const Eigen::Vector3d& x) {
-  constexpr int kPoints = 32;
-  constexpr double kGoldenAngle = 2.399963229728653;
-  Eigen::Vector3d t1, t2;
-  tangent_frame(n, t1, t2);
-  const double radius = std::sqrt(area / kPi);
-  Rgb sum{0.0, 0.0, 0.0};
-  for (int s = 0; s < kPoints; ++s) {
-    const double rho = radius * std::sqrt((s + 0.5) / kPoints);
-    const double angle = kGoldenAngle * s;
-    const Eigen::Vector3d q = p + rho * (std::cos(angle) * t1 + std::sin(angle) * t2);
-    for (int c = 0; c < 3; ++c) {
-      const DipoleChannel& ch = dipole.channel[c];
-      sum[c] += ch.Rd_from_distances((q - ch.z_r * n - x).norm(), (q + ch.z_v * n - x).norm());
-    }
-  }
-  for (double& v : sum) v *= area / kPoints;
-  return sum;
-}
-
 }  // namespace
 
 Rgb NearFieldWeights::B(std::size_t row, const std::vector<Rgb>& E) const {
@@ -114,14 +91,18 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
         if (w[0] > 0.0 || w[1] > 0.0 || w[2] > 0.0) row.add(static_cast<std::uint32_t>(j), w);
       }
       for (std::size_t j : other) {
-        const double area = cells.area[j];
-        if (!(area > 0.0)) continue;
+        if (cells.first[j] == cells.first[j + 1]) continue;
+        // Surfel j's cell in its own plane, the receiver's foot on that plane at the origin;
+        // the other surface's material lies on its side away from the receiver.
+        Eigen::Vector3d u1, u2;
+        tangent_frame(surfels.normals[j], u1, u2);
         const Eigen::Vector3d d = p - surfels.positions[j];
-        // The other surface's material lies on its side away from the receiver.
-        const Eigen::Vector3d nj = surfels.normals[j].dot(d) > 0.0
-                                       ? Eigen::Vector3d(-surfels.normals[j])
-                                       : surfels.normals[j];
-        row.add(static_cast<std::uint32_t>(j), cell_kernel(dipole, surfels.positions[j], nj, area, p));
+        const double height = std::fabs(d.dot(surfels.normals[j]));
+        const Eigen::Vector2d foot(d.dot(u1), d.dot(u2));
+        cell.clear();
+        for (std::uint32_t v = cells.first[j]; v < cells.first[j + 1]; ++v)
+          cell.push_back(cells.outline[v] - foot);
+        row.add(static_cast<std::uint32_t>(j), dipole_over(cell, dipole, height));
       }
     }
   }

@@ -7,8 +7,8 @@
 // near field is taken on the receiver's smooth local surface, not on the stack of discs, so
 // scanner noise and the flat discs' overlap above a curved surface do not bias it. Where no
 // disc covers the plane (an open edge, a hole), no cell does and no light enters. Surfels of
-// other surfaces in reach (the far side of a thin part) weigh in with eq. 3 summed over 32
-// points of their cell (a disc of its area). The far field sums the cells beyond the reach.
+// other surfaces in reach (the far side of a thin part) weigh in with eq. 3 integrated exactly
+// over their cell in its own plane (dipole_over). The far field sums the cells beyond the reach.
 // Computed when the geometry or the material changes; a light move only re-weights it by the
 // new E. Memory: one entry (source index and three weights) per neighbour in reach, about 30
 // per receiver (16 bytes each on the GPU).

@@ -1,7 +1,7 @@
 // The CPU reference: eq. 16 evaluated at every surfel in double precision and in parallel;
 // the ground truth for the GPU path. Each surfel stands for its cell (surfel_cells.h) lit with
 // the irradiance averaged over it (surfel_irradiance.h: 64 samples, 1024 where an edge crosses
-// the cell, against a light map of texels an eighth of a disc radius). B = near field + far
+// the cell, against a light map of texels a sixteenth of a disc radius). B = near field + far
 // field, split by NearFarSplit: the near field by weights integrated exactly over each
 // neighbour's cell on the receiver's local surface (near_field.h), the far field summed over
 // the lit cells beyond by the source tree (source_tree.h), each cell split near the receiver.

@@ -9,10 +9,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 // Patches split near a receiver: into pieces no larger than max(z_r / 2, distance / 8),
-// at most this many.
+// at most this many (a patch of one piece is summed by its second-order expansion).
 constexpr int kMaxPieces = 4096;
 constexpr double kSplitDistanceRatio = 8.0;
-constexpr double kGoldenAngle = 2.399963229728653;
 // Deeper nodes stay leaves; bounds the traversal stack.
 constexpr int kMaxDepth = 200;
 
@@ -163,23 +162,45 @@ void SourceTree::add_sample(int k, const Eigen::Vector3d& x, Rgb& sum) const {
   const double distance = (p - x).norm();
   const double piece = std::max(split_spacing_, distance / kSplitDistanceRatio);
   const double radius = edge_u_[k].norm();  // the patch is a disc of this radius
-  // Pieces of about piece^2 each, spread evenly over the disc (a sunflower pattern).
-  const int pieces =
-      radius > 0.5 * piece
-          ? std::min(kMaxPieces, static_cast<int>(std::ceil(kPi * radius * radius / (piece * piece))))
-          : 1;
-  const Eigen::Vector3d u = radius > 0.0 ? Eigen::Vector3d(edge_u_[k] / radius) : Eigen::Vector3d::Zero();
-  const Eigen::Vector3d v = radius > 0.0 ? Eigen::Vector3d(edge_v_[k] / radius) : Eigen::Vector3d::Zero();
-  const double share = 1.0 / pieces;
-  for (int s = 0; s < pieces; ++s) {
-    const double rho = pieces == 1 ? 0.0 : radius * std::sqrt((s + 0.5) / pieces);
-    const double angle = kGoldenAngle * s;
-    const Eigen::Vector3d q = p + rho * (std::cos(angle) * u + std::sin(angle) * v);
+  // A small disc far from both poles' planar minimum distances (where Rd_from_distances
+  // clamps) is summed whole about its centre: second moment radius^2 / 4 along each tangent.
+  bool whole = !(radius > 0.5 * piece);
+  for (int c = 0; c < 3 && whole; ++c) {
+    const DipoleChannel& ch = dipole_.channel[c];
+    whole = (p - ch.z_r * n - x).norm() > ch.z_r + radius &&
+            (p + ch.z_v * n - x).norm() > ch.z_v + radius;
+  }
+  if (whole) {
+    const double v = 0.25 * radius * radius;
+    const std::array<double, 6> second{v * (1 - n.x() * n.x()), -v * n.x() * n.y(),
+                                       -v * n.x() * n.z(),      v * (1 - n.y() * n.y()),
+                                       -v * n.y() * n.z(),      v * (1 - n.z() * n.z())};
     for (int c = 0; c < 3; ++c) {
       const DipoleChannel& ch = dipole_.channel[c];
-      const double d_r = (q - ch.z_r * n - x).norm();
-      const double d_v = (q + ch.z_v * n - x).norm();
-      sum[c] += share * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
+      sum[c] += power_[k][c] * ch.alpha_prime / (4.0 * kPi) *
+                (expanded_term(ch.z_r, ch.s_tr, p - ch.z_r * n, x, 1.0, second) +
+                 expanded_term(ch.z_v, ch.s_tr, p + ch.z_v * n, x, 1.0, second));
+    }
+    return;
+  }
+  // Equal-area rings about `piece` wide, each with points `piece` apart at even angles: a
+  // rule whose first moment vanishes and whose second is the disc's.
+  const Eigen::Vector3d u = edge_u_[k] / radius, v = edge_v_[k] / radius;
+  const int rings = std::max(1, static_cast<int>(std::ceil(radius / piece)));
+  int points = 0;
+  for (int r = 0; r < rings && points < kMaxPieces; ++r) {
+    const double rho = radius * std::sqrt((r + 0.5) / rings);
+    const int m = std::max(3, static_cast<int>(std::ceil(2.0 * kPi * rho / piece)));
+    const double share = 1.0 / (static_cast<double>(rings) * m);
+    for (int j = 0; j < m; ++j, ++points) {
+      const double angle = 2.0 * kPi * (j + 0.5 * (r % 2)) / m;
+      const Eigen::Vector3d q = p + rho * (std::cos(angle) * u + std::sin(angle) * v);
+      for (int c = 0; c < 3; ++c) {
+        const DipoleChannel& ch = dipole_.channel[c];
+        const double d_r = (q - ch.z_r * n - x).norm();
+        const double d_v = (q + ch.z_v * n - x).norm();
+        sum[c] += share * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
+      }
     }
   }
 }

@@ -7,6 +7,17 @@
 #include <stdexcept>
 
 namespace sss {
+namespace {
+
+// A neighbour at offset d facing away from n_i and off n_i's tangent plane by more than
+// about 11 degrees lies on the other side of a thin part, not on a flipped normal of the
+// same sheet (whose offset is tangential).
+bool on_the_other_sheet(const Eigen::Vector3d& d, const Eigen::Vector3d& ni,
+                        const Eigen::Vector3d& nj) {
+  return nj.dot(ni) < 0.0 && std::fabs(d.dot(ni)) > 0.2 * d.norm();
+}
+
+}  // namespace
 
 SurfaceFit fit_local_surfaces(const std::vector<Eigen::Vector3d>& positions,
                               const std::vector<Eigen::Vector3d>& normals, int neighbours) {
@@ -40,21 +51,26 @@ SurfaceFit fit_local_surfaces(const std::vector<Eigen::Vector3d>& positions,
       index.knnSearch(query, ids, dist2, k, params);
       const Eigen::Vector3d& p = positions[i];
       const Eigen::Vector3d& ni = normals[i];
+      std::vector<std::size_t>& same = ids[0];
+      same.erase(std::remove_if(same.begin(), same.end(),
+                                [&](std::size_t j) {
+                                  const Eigen::Vector3d d = positions[j] - p;
+                                  return !(d.squaredNorm() > 0.0) ||
+                                         on_the_other_sheet(d, ni, normals[j]);
+                                }),
+                 same.end());
       double turn = 0.0, spread = 0.0;
-      for (std::size_t j : ids[0]) {
+      for (std::size_t j : same) {
         const Eigen::Vector3d d = positions[j] - p;
-        const double d2 = d.squaredNorm();
-        if (!(d2 > 0.0)) continue;
         const Eigen::Vector3d nj = normals[j].dot(ni) < 0.0 ? Eigen::Vector3d(-normals[j]) : normals[j];
         turn += (nj - ni).dot(d);
-        spread += d2;
+        spread += d.squaredNorm();
       }
       const double kappa = spread > 0.0 ? turn / spread : 0.0;
       double height2 = 0.0;
       int heights = 0;
-      for (std::size_t j : ids[0]) {
+      for (std::size_t j : same) {
         const Eigen::Vector3d d = positions[j] - p;
-        if (!(d.squaredNorm() > 0.0)) continue;
         const double along = d.dot(ni);
         const double tangential2 = d.squaredNorm() - along * along;
         const double h = along + 0.5 * kappa * tangential2;

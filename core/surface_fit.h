@@ -6,8 +6,12 @@
 //    convex object), and an average of the principal curvatures elsewhere;
 //  - roughness: the RMS height of the neighbours off the osculating paraboloid
 //      sigma_i = RMS_j ((p_j - p_i) . n_i + kappa_i |d_j|^2 / 2),  d_j the tangential offset,
-//    0 on a smooth sampled surface, the depth noise on a scan.
-// Normals are turned to agree with n_i first, so orientation does not matter.
+//    0 on a smooth sampled surface; on a scan with depth noise s it is about sqrt(2) s, the
+//    noise of a height difference.
+// Neighbours facing away from n_i and well off its tangent plane lie on the other side of a
+// thin part and are left out (else both sheets would count as one rough surface); the rest
+// have their normals turned to agree with n_i, so a flipped normal on the same sheet does not
+// matter.
 #pragma once
 
 #include <Eigen/Core>

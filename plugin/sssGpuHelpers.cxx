@@ -9,18 +9,19 @@
 namespace sss
 {
 
-vtkSmartPointer<vtkTextureObject> float_texture_2d(vtkOpenGLRenderWindow* window, int w, int h)
+vtkSmartPointer<vtkTextureObject> float_texture_2d(
+  vtkOpenGLRenderWindow* window, int w, int h, int components)
 {
   auto tex = vtkSmartPointer<vtkTextureObject>::New();
   tex->SetContext(window);
-  tex->SetInternalFormat(GL_RGBA32F);
-  tex->SetFormat(GL_RGBA);
+  tex->SetInternalFormat(components == 2 ? GL_RG32F : GL_RGBA32F);
+  tex->SetFormat(components == 2 ? GL_RG : GL_RGBA);
   tex->SetDataType(GL_FLOAT);
   tex->SetMinificationFilter(vtkTextureObject::Nearest);
   tex->SetMagnificationFilter(vtkTextureObject::Nearest);
   tex->SetWrapS(vtkTextureObject::ClampToEdge);
   tex->SetWrapT(vtkTextureObject::ClampToEdge);
-  tex->Allocate2D(w, h, 4, VTK_FLOAT);
+  tex->Allocate2D(w, h, components, VTK_FLOAT);
   return tex;
 }
 

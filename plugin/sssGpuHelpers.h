@@ -18,8 +18,10 @@ namespace sss
 constexpr int kMaxLights = 4;   // lights that light translucent actors
 constexpr int kMaxLevels = 15;  // pyramid levels per light (maps or surfel lists of 2^14)
 
-// An RGBA32F texture with nearest filtering, clamped at the edges.
-vtkSmartPointer<vtkTextureObject> float_texture_2d(vtkOpenGLRenderWindow* window, int w, int h);
+// An RGBA32F (or, with 2 components, RG32F) texture with nearest filtering, clamped at the
+// edges.
+vtkSmartPointer<vtkTextureObject> float_texture_2d(
+  vtkOpenGLRenderWindow* window, int w, int h, int components = 4);
 
 // Creates the full-screen quad on first use and binds its program; nullptr if it did not
 // compile.

@@ -5,6 +5,7 @@
 #include "sss_far_field.h"
 #include "sss_fresnel_table.h"
 #include "sss_light_maps.h"
+#include "sss_light_visibility.h"
 #include "sss_near_field.h"
 #include "sss_near_field_fs.h"
 #include "sss_pyramid_reduce_fs.h"
@@ -149,7 +150,12 @@ struct SurfelPipeline::Gpu
   SurfelPipelineSettings settings;
 
   vtkSmartPointer<vtkTextureObject> point, shape, cell, albedo, rows, entries, fresnel, B;
-  vtkSmartPointer<vtkTextureObject> E, source[5];  // per light atlases
+  // Per light atlases: E, and the source pyramid (pyramid_reduce_fs.glsl): point, power,
+  // normal, then the moments of points, normals and their cross term. The irradiance pass
+  // writes the first kCellSources at level 0; a cell's normal is constant, so the others are
+  // 0 there.
+  static constexpr int kSources = 8, kCellSources = 5;
+  vtkSmartPointer<vtkTextureObject> E, source[kSources];
   int atlas_lights = 0;
   std::vector<std::vector<Rect>> levels;  // per light: the source pyramid's levels
   vtkNew<vtkOpenGLBufferObject> texel;    // per input surfel: its list texel
@@ -158,13 +164,20 @@ struct SurfelPipeline::Gpu
 
   void release(vtkWindow* window)
   {
-    for (auto* t : { &point, &shape, &cell, &albedo, &rows, &entries, &fresnel, &B, &E, &source[0],
-           &source[1], &source[2], &source[3], &source[4] })
+    for (auto* t : { &point, &shape, &cell, &albedo, &rows, &entries, &fresnel, &B, &E })
     {
       if (*t)
       {
         (*t)->ReleaseGraphicsResources(window);
         *t = nullptr;
+      }
+    }
+    for (auto& t : source)
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(window);
+        t = nullptr;
       }
     }
     for (auto* q : { &irradiance_quad, &reduce_quad, &gather_quad })
@@ -231,8 +244,9 @@ struct SurfelPipeline::Gpu
     SetFloat3Array(program, "mapAxisV", v);
     SetFloat3Array(program, "lightDirection", towards);
     SetFloat3Array(program, "lightIrradiance", irradiance);
-    program->SetUniformi("mapPoint", maps.point->GetTextureUnit());
-    program->SetUniformi("mapNormal", maps.normal->GetTextureUnit());
+    program->SetUniformi("mapSurfel", maps.surfel->GetTextureUnit());
+    program->SetUniformf("discRadius", static_cast<float>(radius));
+    program->SetUniformf("kappaLimitCell", static_cast<float>(1.0 / radius));
   }
 
   void activate_list()
@@ -456,7 +470,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   // Each light: the cells' irradiance and the finest level of its source pyramid, then the
   // coarser levels.
   const std::string irradiance_fs = Pieces(sss_surfel_irradiance_fs,
-    std::string(sss_light_maps) + sss_surfel_list + sss_fresnel_table);
+    std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table);
   vtkShaderProgram* irradiance = ready_quad(g.irradiance_quad, window, irradiance_fs.c_str());
   vtkShaderProgram* reduce = irradiance ? ready_quad(g.reduce_quad, window, sss_pyramid_reduce_fs) : nullptr;
   if (!irradiance || !reduce)
@@ -465,18 +479,24 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
     state->PopFramebufferBindings();
     return false;
   }
+  state->vtkglClearColor(0, 0, 0, 0);
+  state->vtkglViewport(0, 0, g.source[0]->GetWidth(), g.source[0]->GetHeight());
+  for (int k = 0; k < Gpu::kSources; ++k)  // kSources <= 8 draw buffers
+  {
+    g.fbo->AddColorAttachment(k, g.source[k]);
+  }
+  g.fbo->ActivateDrawBuffers(Gpu::kSources);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  g.fbo->RemoveColorAttachments(Gpu::kSources);
   g.fbo->AddColorAttachment(0, g.E);
-  for (int k = 0; k < 5; ++k)
+  for (int k = 0; k < Gpu::kCellSources; ++k)
   {
     g.fbo->AddColorAttachment(k + 1, g.source[k]);
   }
-  g.fbo->ActivateDrawBuffers(6);
-  state->vtkglClearColor(0, 0, 0, 0);
-  state->vtkglViewport(0, 0, g.source[0]->GetWidth(), g.source[0]->GetHeight());
+  g.fbo->ActivateDrawBuffers(Gpu::kCellSources + 1);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
   window->GetShaderCache()->ReadyShaderProgram(irradiance);
-  maps.point->Activate();
-  maps.normal->Activate();
+  maps.surfel->Activate();
   g.activate_list();
   g.fresnel->Activate();
   g.set_maps(irradiance, maps);
@@ -485,7 +505,6 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   irradiance->SetUniformi("fresnelTableSize", kFresnelTableSize);
   irradiance->SetUniformi("cellSamples", g.settings.cell_samples);
   irradiance->SetUniformi("cellRefinedSamples", g.settings.cell_refined_samples);
-  irradiance->SetUniformf("kappaLimitCell", static_cast<float>(1.0 / g.radius));
   for (int l = 0; l < lights; ++l)
   {
     irradiance->SetUniformi("light", l);
@@ -495,23 +514,22 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   }
   g.fresnel->Deactivate();
   g.deactivate_list();
-  maps.point->Deactivate();
-  maps.normal->Deactivate();
-  g.fbo->RemoveColorAttachments(6);
+  maps.surfel->Deactivate();
+  g.fbo->RemoveColorAttachments(Gpu::kCellSources + 1);
 
-  for (int k = 0; k < 5; ++k)
+  for (int k = 0; k < Gpu::kSources; ++k)
   {
     g.fbo->AddColorAttachment(k, g.source[k]);
   }
-  g.fbo->ActivateDrawBuffers(5);
+  g.fbo->ActivateDrawBuffers(Gpu::kSources);
   window->GetShaderCache()->ReadyShaderProgram(reduce);
   for (auto& t : g.source)
   {
     t->Activate();
   }
-  const char* names[5] = { "mapPoint", "mapPower", "mapNormal", "mapCovariance0",
-    "mapCovariance1" };
-  for (int k = 0; k < 5; ++k)
+  const char* names[Gpu::kSources] = { "mapPoint", "mapPower", "mapNormal", "mapCovariance0",
+    "mapCovariance1", "mapCovariance2", "mapCovariance3", "mapCovariance4" };
+  for (int k = 0; k < Gpu::kSources; ++k)
   {
     reduce->SetUniformi(names[k], g.source[k]->GetTextureUnit());
   }
@@ -541,7 +559,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
     glReadPixels(top.x, top.y, 1, 1, GL_RGBA, GL_FLOAT, value);
     report.lit_cells += static_cast<std::size_t>(value[3] + 0.5f);
   }
-  g.fbo->RemoveColorAttachments(5);
+  g.fbo->RemoveColorAttachments(Gpu::kSources);
   if (finish)
   {
     glFinish();
@@ -575,9 +593,10 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   gather->SetUniformi("nearRows", g.rows->GetTextureUnit());
   gather->SetUniformi("nearEntries", g.entries->GetTextureUnit());
   gather->SetUniformi("irradiance", g.E->GetTextureUnit());
-  const char* source_names[5] = { "sourcePoint", "sourcePower", "sourceNormal",
-    "sourceCovariance0", "sourceCovariance1" };
-  for (int k = 0; k < 5; ++k)
+  const char* source_names[Gpu::kSources] = { "sourcePoint", "sourcePower", "sourceNormal",
+    "sourceCovariance0", "sourceCovariance1", "sourceCovariance2", "sourceCovariance3",
+    "sourceCovariance4" };
+  for (int k = 0; k < Gpu::kSources; ++k)
   {
     gather->SetUniformi(source_names[k], g.source[k]->GetTextureUnit());
   }

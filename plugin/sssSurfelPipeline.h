@@ -34,8 +34,7 @@ namespace sss
 // What step 1 hands to step 2: the light maps (one atlas) and their lights.
 struct LightMapAtlas
 {
-  vtkTextureObject* point = nullptr;   // lifted point of the disc seen
-  vtkTextureObject* normal = nullptr;  // its normal; 0 where no disc
+  vtkTextureObject* surfel = nullptr;  // the seen surfel's list texel; x < 0: none
   struct Map
   {
     int x = 0, y = 0, width = 0, height = 0;  // where it lies in the atlas
@@ -48,12 +47,13 @@ struct LightMapAtlas
   std::vector<Map> maps;
 };
 
+// Filled from vtkSubsurfacePass's settings, where their defaults are.
 struct SurfelPipelineSettings
 {
-  int cell_samples = 16;          // per cell and light, for its irradiance
-  int cell_refined_samples = 128; // where those disagree (an edge crosses the cell)
-  double opening_angle = 0.5;     // far-field walk
-  double max_group_diffusion_lengths = 2.0;
+  int cell_samples = 0;          // per cell and light, for its irradiance
+  int cell_refined_samples = 0;  // where those disagree (an edge crosses the cell)
+  double opening_angle = 0;      // far-field walk
+  double max_group_diffusion_lengths = 0;
 };
 
 struct SurfelPipelineReport

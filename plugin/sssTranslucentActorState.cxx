@@ -5,6 +5,7 @@
 #include "sss_dipole.h"
 #include "sss_gather_paper.h"
 #include "sss_illumination_fs.h"
+#include "sss_light_map_surfel_fs.h"
 #include "sss_light_maps.h"
 #include "sss_paper_taps_fs.h"
 #include "sss_surfel_gs.h"
@@ -191,13 +192,14 @@ struct TranslucentActorState::Gpu
   vtkNew<vtkOpenGLBufferObject> no_texel;  // the resolve's texel attribute for the paper: unused
   ProgramVAO illumination_vao, resolve_vao, grid_vao;
 
-  // Step 1: one light map per light, side by side in one atlas.
+  // Step 1: one light map per light, side by side in one atlas: the paper's point, power and
+  // normal per texel, or the surfel pipeline's seen surfel.
   std::vector<OrthoView> maps;
   std::vector<Eigen::Vector3d> light_directions;
   std::vector<Rgb> light_irradiance;
   std::vector<int> map_x;  // where each light's map starts in the atlas
   int atlas_width = 0, atlas_height = 0;
-  vtkSmartPointer<vtkTextureObject> atlas_point, atlas_power, atlas_normal, atlas_depth;
+  vtkSmartPointer<vtkTextureObject> atlas_point, atlas_power, atlas_normal, atlas_surfel, atlas_depth;
   vtkNew<vtkOpenGLFramebufferObject> map_fbo, grid_fbo, list_fbo, taps_fbo;
 
   // Step 2: the surfel pipeline, or the paper's virtual points.
@@ -216,8 +218,7 @@ struct TranslucentActorState::Gpu
   LightMapAtlas atlas() const
   {
     LightMapAtlas a;
-    a.point = atlas_point;
-    a.normal = atlas_normal;
+    a.surfel = atlas_surfel;
     for (std::size_t l = 0; l < maps.size(); ++l)
     {
       LightMapAtlas::Map m;
@@ -249,7 +250,8 @@ struct TranslucentActorState::Gpu
       v->vao->ReleaseGraphicsResources();
       v->program = nullptr;
     }
-    for (auto* t : { &atlas_point, &atlas_power, &atlas_normal, &atlas_depth, &grid_radiance, &list })
+    for (auto* t : { &atlas_point, &atlas_power, &atlas_normal, &atlas_surfel, &atlas_depth,
+           &grid_radiance, &list })
     {
       if (*t)
       {
@@ -501,8 +503,8 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     return false;
   }
   const bool paper = settings.strategy == KernelStrategy::Paper;
-  // The paper's map is 512 texels a side; the surfel pipeline's texels are a quarter of a
-  // disc radius, at most MaxMapSize a side.
+  // The paper's map is 512 texels a side; the surfel pipeline's texels are TexelPerRadius of
+  // a disc radius, at most MaxMapSize a side.
   const double texel = paper ? 1e-9 : settings.texel_per_radius * g.local.radius;
   const int max_size = paper ? kPaperMapSize : settings.max_map_size;
   g.maps.clear();
@@ -537,16 +539,32 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   // more than four times the area needed.
   const bool fits = atlas_w <= g.atlas_width && atlas_h <= g.atlas_height;
   const bool oversized = 4.0 * atlas_w * atlas_h < double(g.atlas_width) * g.atlas_height;
-  if (!fits || oversized || !g.atlas_point)
+  const bool other_kind = paper ? !g.atlas_point : !g.atlas_surfel;
+  if (!fits || oversized || other_kind)
   {
     if (!oversized)
     {
       atlas_w = std::max(atlas_w, g.atlas_width);
       atlas_h = std::max(atlas_h, g.atlas_height);
     }
-    g.atlas_point = float_texture_2d(window, atlas_w, atlas_h);
-    g.atlas_power = float_texture_2d(window, atlas_w, atlas_h);
-    g.atlas_normal = float_texture_2d(window, atlas_w, atlas_h);
+    for (auto* t : { &g.atlas_point, &g.atlas_power, &g.atlas_normal, &g.atlas_surfel })
+    {
+      if (*t)
+      {
+        (*t)->ReleaseGraphicsResources(window);
+        *t = nullptr;
+      }
+    }
+    if (paper)
+    {
+      g.atlas_point = float_texture_2d(window, atlas_w, atlas_h);
+      g.atlas_power = float_texture_2d(window, atlas_w, atlas_h);
+      g.atlas_normal = float_texture_2d(window, atlas_w, atlas_h);
+    }
+    else
+    {
+      g.atlas_surfel = float_texture_2d(window, atlas_w, atlas_h, 2);
+    }
     g.atlas_depth = vtkSmartPointer<vtkTextureObject>::New();
     g.atlas_depth->SetContext(window);
     g.atlas_depth->AllocateDepth(atlas_w, atlas_h, vtkTextureObject::Float32);
@@ -565,26 +583,39 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   state->PushFramebufferBindings();
   g.map_fbo->SetContext(window);
   g.map_fbo->Bind();
-  g.map_fbo->AddColorAttachment(0, g.atlas_point);
-  g.map_fbo->AddColorAttachment(1, g.atlas_power);
-  g.map_fbo->AddColorAttachment(2, g.atlas_normal);
+  const int targets = paper ? 3 : 1;
+  if (paper)
+  {
+    g.map_fbo->AddColorAttachment(0, g.atlas_point);
+    g.map_fbo->AddColorAttachment(1, g.atlas_power);
+    g.map_fbo->AddColorAttachment(2, g.atlas_normal);
+  }
+  else
+  {
+    g.map_fbo->AddColorAttachment(0, g.atlas_surfel);
+  }
   g.map_fbo->AddDepthAttachment(g.atlas_depth);
-  g.map_fbo->ActivateDrawBuffers(3);
+  g.map_fbo->ActivateDrawBuffers(targets);
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglViewport(0, 0, g.atlas_width, g.atlas_height);
-  state->vtkglClearColor(0, 0, 0, 0);
+  const float none = paper ? 0.0f : -1.0f;  // the paper's normal 0, or no surfel
+  state->vtkglClearColor(none, none, none, none);
   state->vtkglClearDepth(1.0);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
+  // The paper's texels lifted by each disc's curvature; the pipeline's carry the surfel's list
+  // texel in the colour.
   std::string vs = sss_surfel_vs;
   vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Dec", "", true);
   vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Impl", "", true);
-  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Dec", "in float curvatureMC;", true);
-  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Impl", "curvature_gs = curvatureMC;", true);
-  const std::string fs = WithPieces(sss_illumination_fs, "");
+  vtkShaderProgram::Substitute(
+    vs, "//SSS::Shape::Dec", paper ? "in float curvatureMC;" : "in vec2 listTexelMC;", true);
+  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Impl",
+    paper ? "curvature_gs = curvatureMC;" : "colour_gs = vec4(listTexelMC, 0.0, 0.0);", true);
+  const std::string fs = paper ? WithPieces(sss_illumination_fs, "") : sss_light_map_surfel_fs;
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), sss_surfel_gs);
   if (!program)
@@ -601,8 +632,16 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     pv.vao->Bind();
     pv.vao->AddAttributeArray(program, g.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
     pv.vao->AddAttributeArray(program, g.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
-    pv.vao->AddAttributeArray(program, g.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
-    pv.vao->AddAttributeArray(program, g.curvatures, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
+    if (paper)
+    {
+      pv.vao->AddAttributeArray(program, g.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+      pv.vao->AddAttributeArray(program, g.curvatures, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
+    }
+    else
+    {
+      pv.vao->AddAttributeArray(
+        program, g.pipeline.list_texel(), "listTexelMC", 0, 8, VTK_FLOAT, 2, false);
+    }
     pv.program = program;
   }
   float eta[3];
@@ -656,7 +695,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(g.local.size()));
   }
   pv.vao->Release();
-  g.map_fbo->RemoveColorAttachments(3);
+  g.map_fbo->RemoveColorAttachments(targets);
   g.map_fbo->RemoveDepthAttachment();
   state->PopFramebufferBindings();
   return true;

@@ -34,12 +34,13 @@ enum class KernelStrategy
   NearFar = 1  // each surfel's cell lit; near field by a table, far field by a walk
 };
 
+// Filled from vtkSubsurfacePass's settings, where their defaults are.
 struct GpuSettings
 {
   KernelStrategy strategy = KernelStrategy::NearFar;
   int grid_level = 0;     // Paper: 2^level grid points per axis, 0: its 64
-  int max_map_size = 2048;
-  double texel_per_radius = 0.25;
+  int max_map_size = 0;
+  double texel_per_radius = 0;
   SurfelPipelineSettings pipeline;
   bool operator==(const GpuSettings& o) const
   {

@@ -62,9 +62,10 @@ public:
 
   ///@{
   /**
-   * Light maps: texel edge over the surfel disc radius (default 0.25, so each cell is several
-   * texels across) and the largest map side (default 2048; a larger scene gets coarser texels).
-   * PAPER always uses a 512 x 512 map.
+   * Light maps: texel edge over the surfel disc radius (default 0.0625, as the reference's, so
+   * each cell is many texels across) and the largest map side (default 4096; a larger scene
+   * gets coarser texels). NEAR_FAR's map holds which surfel each texel sees (8 bytes a texel
+   * and 4 of depth: 192 MiB per light at 4096 x 4096). PAPER always uses a 512 x 512 map.
    */
   vtkSetClampMacro(TexelPerRadius, double, 0.01, 16.0);
   vtkGetMacro(TexelPerRadius, double);
@@ -74,8 +75,9 @@ public:
 
   ///@{
   /**
-   * Points of each cell whose light the map is asked for, per light (default 16); eight times
-   * as many where they disagree (a shadow edge or the terminator crosses the cell).
+   * Points of each cell whose light the map is asked for, per light (default 64); eight times
+   * as many where they disagree (a shadow edge or the terminator crosses the cell). Fewer miss
+   * thin lit or shadowed slivers: 16 put the dragon's p99 error at 13 % against 4 %.
    */
   vtkSetClampMacro(CellSamples, int, 1, 256);
   vtkGetMacro(CellSamples, int);
@@ -83,10 +85,11 @@ public:
 
   ///@{
   /**
-   * Far field: a group of cells counts as one source once its size is below this fraction of
-   * its distance (default 0.5; smaller is more accurate and slower), and only while it spans
-   * at most MaxGroupDiffusionLengths diffusion lengths (1 / s_tr) of every channel whose
-   * kernel still matters at its distance (default 2).
+   * Far field: a group of cells counts as one source once its spread (twice the RMS distance
+   * of its cells from their mean) is below this fraction of its distance (default 0.4; smaller
+   * is more accurate and slower), and only while it spans at most MaxGroupDiffusionLengths
+   * diffusion lengths (1 / s_tr) of every channel whose kernel still matters at its distance
+   * (default 4).
    */
   vtkSetClampMacro(OpeningAngle, double, 0.05, 2.0);
   vtkGetMacro(OpeningAngle, double);
@@ -196,11 +199,11 @@ protected:
   ~vtkSubsurfacePass() override;
 
   int KernelStrategy = NEAR_FAR;
-  double TexelPerRadius = 0.25;
-  int MaxMapSize = 2048;
-  int CellSamples = 16;
-  double OpeningAngle = 0.5;
-  double MaxGroupDiffusionLengths = 2.0;
+  double TexelPerRadius = 0.0625;
+  int MaxMapSize = 4096;
+  int CellSamples = 64;
+  double OpeningAngle = 0.4;
+  double MaxGroupDiffusionLengths = 4.0;
   int GridLevel = 0;
   double Exposure = 1.0;
   bool CaptureLinearImage = false;

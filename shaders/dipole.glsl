@@ -27,15 +27,21 @@ vec3 dipoleRd(vec3 p, vec3 n, vec3 x)
 
 // One pole's term of eq. 3 (z (1 + s d) e^(-s d) / d^3) at the pole's distance from x,
 // averaged over sources with covariance `cov` around the pole by its second-order Taylor
-// expansion; inside the planar minimum distance the term is flat and taken as it is.
-float poleTermSecondOrder(vec3 pole, vec3 x, float z, float s, mat3 cov)
+// expansion. The sources lie within `reach` of the pole in the plane normal to n; where that
+// disc comes nearer to x than the planar minimum distance z (inside it the term is flat, a
+// kink the expansion cannot follow), the term at the pole as it is.
+float poleTermSecondOrder(vec3 pole, vec3 n, float reach, vec3 x, float z, float s, mat3 cov)
 {
   vec3 offset = pole - x;
   float d = length(offset);
-  if (d <= z)
+  float h = dot(offset, n);
+  float off = max(length(offset - h * n) - reach, 0.0);
+  if (h * h + off * off <= z * z)
   {
-    return (1.0 + s * z) * exp(-s * z) / (z * z);
+    float dc = max(d, z);
+    return z * (1.0 + s * dc) * exp(-s * dc) / (dc * dc * dc);
   }
+  float trace = cov[0][0] + cov[1][1] + cov[2][2];
   float sd = s * d;
   float e = exp(-sd);
   float d3 = d * d * d;
@@ -44,18 +50,55 @@ float poleTermSecondOrder(vec3 pole, vec3 x, float z, float s, mat3 cov)
   float d2 = z * e * (12.0 + 12.0 * sd + 5.0 * sd * sd + sd * sd * sd) / (d3 * d * d);
   vec3 u = offset / d;
   float along = dot(u, cov * u);
-  float trace = cov[0][0] + cov[1][1] + cov[2][2];
   return value + 0.5 * (d2 * along + d1 / d * (trace - along));
 }
 
-// Eq. 3 summed over a group of sources with mean point p, normal n and point covariance cov.
-vec3 dipoleRdSecondOrder(vec3 p, vec3 n, mat3 cov, vec3 x)
+// The sources of a group as their poles see them: points p_i with normals n_i have poles at
+// p_i + t n_i (t = -z_r for the real one, z_v for the virtual one), with mean p + t n (p, n
+// the group's mean point and unnormalised mean normal) and covariance Cpp + t S + t^2 Cnn.
+struct SourceGroup
+{
+  vec3 p;
+  vec3 n;
+  float reach;  // the sources lie within it of p (a cell: its disc radius)
+  mat3 Cpp, S, Cnn;
+};
+
+float poleSpread(SourceGroup g, float t)
+{
+  float trace = (g.Cpp[0][0] + g.Cpp[1][1] + g.Cpp[2][2]) + t * (g.S[0][0] + g.S[1][1] + g.S[2][2]) +
+    t * t * (g.Cnn[0][0] + g.Cnn[1][1] + g.Cnn[2][2]);
+  return 2.0 * sqrt(max(trace, 0.0));
+}
+
+// Whether poleTermSecondOrder expands both poles of every channel at x: each pole's mean
+// farther from x than its planar minimum distance plus the poles' spread (twice their RMS
+// distance from the mean), so that no pole of the group reaches the clamp.
+bool secondOrderHolds(SourceGroup g, vec3 x)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (length(g.p - zR[c] * g.n - x) <= zR[c] + poleSpread(g, -zR[c]) ||
+      length(g.p + zV[c] * g.n - x) <= zV[c] + poleSpread(g, zV[c]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Eq. 3 summed over a group of sources, each pole by its own mean and covariance.
+vec3 dipoleRdSecondOrder(SourceGroup g, vec3 x)
 {
   vec3 rd;
   for (int c = 0; c < 3; ++c)
   {
-    rd[c] = rdFactor[c] * (poleTermSecondOrder(p - zR[c] * n, x, zR[c], sTr[c], cov) +
-      poleTermSecondOrder(p + zV[c] * n, x, zV[c], sTr[c], cov));
+    float tr = -zR[c], tv = zV[c];
+    rd[c] = rdFactor[c] *
+      (poleTermSecondOrder(g.p + tr * g.n, g.n, g.reach, x, zR[c], sTr[c],
+         g.Cpp + tr * g.S + tr * tr * g.Cnn) +
+        poleTermSecondOrder(g.p + tv * g.n, g.n, g.reach, x, zV[c], sTr[c],
+          g.Cpp + tv * g.S + tv * tv * g.Cnn));
   }
   return rd;
 }

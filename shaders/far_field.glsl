@@ -1,16 +1,21 @@
 // The far field of eq. 17 at a receiver: a walk of each light's source pyramid (the lit cells,
 // surfel_irradiance_fs.glsl, reduced by pyramid_reduce_fs.glsl) over the cells whose surfel
 // lies farther than farFrom (the near-field table holds the nearer ones whole), taking a group
-// of cells as one source, with its point covariance as a second-order term, once it subtends
-// less than openingAngle seen from x and spans at most maxGroupDiffusionLengths of every
-// channel whose kernel still matters there. The GPU form of the CPU reference's source tree
-// (core/source_tree.h). Needs dipole.glsl.
+// of cells as one source, each dipole pole by its own mean and covariance (dipole.glsl), once
+// its spread (twice the RMS distance of its points from their mean) is below openingAngle
+// times its distance from x, its radius spans at most maxGroupDiffusionLengths of every
+// channel whose kernel still matters there, and x lies beyond the clamp of every pole by the
+// poles' spread (where the expansion holds; the reference's tree asks the same). The GPU
+// form of the CPU reference's source tree (core/source_tree.h). Needs dipole.glsl.
 
 uniform sampler2D sourcePoint;        // xyz: power-weighted mean point, w: summed power
 uniform sampler2D sourcePower;        // rgb: E dA
-uniform sampler2D sourceNormal;       // xyz: mean normal, w: radius of the group (mm)
-uniform sampler2D sourceCovariance0;  // xx, yy, zz, xy
-uniform sampler2D sourceCovariance1;  // xz, yz
+uniform sampler2D sourceNormal;       // xyz: power-weighted mean normal (not normalised), w: radius of the group (mm)
+uniform sampler2D sourceCovariance0;  // points: xx, yy, zz, xy (pyramid_reduce_fs.glsl)
+uniform sampler2D sourceCovariance1;  // points: xz, yz; S: xx, yy
+uniform sampler2D sourceCovariance2;  // S: zz, xy, xz, yz
+uniform sampler2D sourceCovariance3;  // normals: xx, yy, zz, xy
+uniform sampler2D sourceCovariance4;  // normals: xz, yz
 uniform int sourceLevelCount[SSS_MAX_LIGHTS];
 uniform vec4 sourceLevelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
 uniform float openingAngle;
@@ -54,15 +59,25 @@ vec3 farFieldB(vec3 x)
           sTrSignificant = max(sTrSignificant, sTr[c]);
         }
       }
-      bool smallEnough =
-        size < openingAngle * d && size * sTrSignificant < maxGroupDiffusionLengths;
+      vec4 c0 = texelFetch(sourceCovariance0, texel, 0);
+      vec4 c1 = texelFetch(sourceCovariance1, texel, 0);
+      vec4 c2 = texelFetch(sourceCovariance2, texel, 0);
+      vec4 c3 = texelFetch(sourceCovariance3, texel, 0);
+      vec4 c4 = texelFetch(sourceCovariance4, texel, 0);
+      SourceGroup group;
+      group.p = point.xyz;
+      group.n = normal.xyz;
+      group.reach = size;
+      group.Cpp = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
+      group.S = mat3(c1.z, c2.y, c2.z, c2.y, c1.w, c2.w, c2.z, c2.w, c2.x);
+      group.Cnn = mat3(c3.x, c3.w, c4.x, c3.w, c3.y, c4.y, c4.x, c4.y, c3.z);
+      float spread = 2.0 * sqrt(max(c0.x + c0.y + c0.z, 0.0));
+      bool smallEnough = spread < openingAngle * d &&
+        size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x);
       if (level == 0 || (smallEnough && !straddles) || depth > 60)
       {
         vec3 power = texelFetch(sourcePower, texel, 0).rgb;
-        vec4 c0 = texelFetch(sourceCovariance0, texel, 0);
-        vec4 c1 = texelFetch(sourceCovariance1, texel, 0);
-        mat3 cov = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
-        sum += power * dipoleRdSecondOrder(point.xyz, normal.xyz, cov, x);
+        sum += power * dipoleRdSecondOrder(group, x);
         continue;
       }
       ivec2 childSize = ivec2(sourceLevelRect[base + level - 1].zw);

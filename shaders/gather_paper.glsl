@@ -3,7 +3,10 @@
 // inverse of its sampling density, so the taps estimate the window's sum; nothing outside the
 // window is counted. Needs light_maps.glsl and dipole.glsl.
 
-uniform vec3 paperTaps[49];               // offset in texels (xy), weight (z)
+uniform sampler2D mapPoint;   // xyz: point (local mm), w: summed power over its channels
+uniform sampler2D mapPower;   // rgb: E dA, w: lit texels
+uniform sampler2D mapNormal;  // xyz: unit normal (0 where no disc)
+uniform vec3 paperTaps[49];   // offset in texels (xy), weight (z)
 
 vec3 gatherB(vec3 x)
 {

@@ -10,7 +10,6 @@
 uniform int light;               // which light
 uniform int cellSamples;
 uniform int cellRefinedSamples;
-uniform float kappaLimitCell;    // 1/mm: the curvature clamp of the cell's paraboloid
 
 in vec2 texCoord;  // over the surfel list
 

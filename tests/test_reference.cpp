@@ -3,33 +3,15 @@
 // coarsely and finely gives the same radiance, and refining the reference changes little.
 #include <gtest/gtest.h>
 
-#include <flann/flann.hpp>
-
-#include <Eigen/Dense>
-#include <algorithm>
 #include <cstdio>
-#include <random>
 
 #include "error_metric.h"
-#include "fresnel.h"
 #include "procedural_shapes.h"
 #include "reference_renderer.h"
+#include "sphere_cases.h"
 
-namespace sss {
+namespace sss::test {
 namespace {
-
-std::vector<std::size_t> sample_of(const SurfelCloud& cloud, std::size_t count, unsigned seed,
-                                   const Eigen::Vector3d& towards = Eigen::Vector3d::Zero(),
-                                   double min_cos = -2.0) {
-  std::vector<std::size_t> ids;
-  for (std::size_t i = 0; i < cloud.size(); ++i)
-    if (cloud.normals[i].dot(towards) > min_cos) ids.push_back(i);
-  std::mt19937 rng(seed);
-  std::shuffle(ids.begin(), ids.end(), rng);
-  ids.resize(std::min(count, ids.size()));
-  std::sort(ids.begin(), ids.end());
-  return ids;
-}
 
 // A marble, skim milk or ketchup sphere of radius 5 m (125,000 points on a Fibonacci lattice,
 // 48 mm apart), lit and seen along +z: at a point whose normal makes theta with the light,
@@ -38,7 +20,6 @@ class SphereClosedForm : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SphereClosedForm, FiveMetreSphereMeetsTheLocalClosedForm) {
   const Material material = Material::preset(GetParam(), 1.3);
-  const Dipole dipole(material);
   const SurfelCloud sphere = make_fibonacci_sphere(5000.0, 125000);
   const Eigen::Vector3d light(0, 0, 1);
   ReferenceSettings settings;
@@ -46,13 +27,8 @@ TEST_P(SphereClosedForm, FiveMetreSphereMeetsTheLocalClosedForm) {
   const SurfelRadiance r = render_reference(sphere, material, {{light, 1.0}}, settings);
   std::vector<Rgb> got, expected;
   for (std::size_t i : settings.receivers) {
-    const double c = sphere.normals[i].dot(light);
-    Rgb e;
-    for (int k = 0; k < 3; ++k)
-      e[k] = fresnel_transmittance(material.eta[k], c) * c *
-             dipole.channel[k].total_diffuse_reflectance() / M_PI;
     got.push_back(r.B[i]);
-    expected.push_back(e);
+    expected.push_back(local_closed_form(material, sphere.normals[i], light));
   }
   const ErrorStats e = compare_radiance(got, expected);
   std::printf("[ reference sphere ] %s, R 5 m, %zu points %.1f mm apart (discs %.1f mm), "
@@ -67,46 +43,6 @@ INSTANTIATE_TEST_SUITE_P(Materials, SphereClosedForm,
                          ::testing::Values("marble", "skimmilk", "ketchup"),
                          [](const auto& info) { return std::string(info.param); });
 
-// B of `fine` at each of `points` (on the same surface), from a linear fit in the tangent
-// plane over the 6 nearest fine surfels, so that the comparison is at the same place: B of a
-// translucent sphere changes by several per cent over the 0.2 mm to the nearest fine point.
-std::vector<Rgb> fitted_at(const SurfelCloud& coarse, const std::vector<std::size_t>& points,
-                           const SurfelCloud& fine, const std::vector<Rgb>& fine_B,
-                           const std::vector<std::vector<std::size_t>>& neighbours) {
-  std::vector<Rgb> out;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const Eigen::Vector3d& p = coarse.positions[points[k]];
-    const Eigen::Vector3d n = coarse.normals[points[k]];
-    const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
-    Eigen::MatrixXd A(6, 3), Y(6, 3);
-    for (int q = 0; q < 6; ++q) {
-      const std::size_t j = neighbours[k][q];
-      const Eigen::Vector3d d = fine.positions[j] - p;
-      A.row(q) << 1.0, d.dot(t1), d.dot(t2);
-      for (int c = 0; c < 3; ++c) Y(q, c) = fine_B[j][c];
-    }
-    const Eigen::MatrixXd fit = A.colPivHouseholderQr().solve(Y);
-    out.push_back({fit(0, 0), fit(0, 1), fit(0, 2)});
-  }
-  return out;
-}
-
-std::vector<std::vector<std::size_t>> nearest_of(const SurfelCloud& fine, const SurfelCloud& coarse,
-                                                 const std::vector<std::size_t>& points, int k) {
-  std::vector<double> data(3 * fine.size()), query(3 * points.size());
-  for (std::size_t i = 0; i < fine.size(); ++i)
-    for (int a = 0; a < 3; ++a) data[3 * i + a] = fine.positions[i][a];
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (int a = 0; a < 3; ++a) query[3 * i + a] = coarse.positions[points[i]][a];
-  flann::Matrix<double> d(data.data(), fine.size(), 3), q(query.data(), points.size(), 3);
-  flann::Index<flann::L2<double>> index(d, flann::KDTreeSingleIndexParams(16));
-  index.buildIndex();
-  std::vector<std::vector<std::size_t>> ids;
-  std::vector<std::vector<double>> dist2;
-  index.knnSearch(q, ids, dist2, k, flann::SearchParams());
-  return ids;
-}
-
 // The truth does not depend on the sampling: a 30 mm sphere sampled as the Stanford bunny is
 // (1.26 mm) and three times finer gives the same B. Flat discs 1.9 mm wide stack 0.06 mm above
 // such a sphere; the old reference took its near sources from that stack and came out
@@ -114,19 +50,14 @@ std::vector<std::vector<std::size_t>> nearest_of(const SurfelCloud& fine, const 
 class SamplingInvariance : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SamplingInvariance, ThirtyMillimetreSphereAtTwoSamplings) {
-  const double R = 30.0;
-  auto count_for = [&](double h) { return static_cast<int>(4 * M_PI * R * R / (0.866 * h * h)); };
-  const SurfelCloud coarse = make_fibonacci_sphere(R, count_for(1.26));
-  const SurfelCloud fine = make_fibonacci_sphere(R, count_for(0.4));
+  const TwoSamplings two = thirty_millimetre_spheres();
+  const SurfelCloud &coarse = two.coarse, &fine = two.fine;
   const Material material = Material::preset(GetParam(), 1.3);
-  const std::vector<DirectionalLight> light{{Eigen::Vector3d(0.3, 0.4, 1.0), 1.0}};
+  const std::vector<DirectionalLight>& light = two.light;
   ReferenceSettings at_coarse, at_fine;
-  at_coarse.receivers = sample_of(coarse, 800, 3);
-  const auto neighbours = nearest_of(fine, coarse, at_coarse.receivers, 6);
-  for (const auto& row : neighbours) at_fine.receivers.insert(at_fine.receivers.end(), row.begin(), row.end());
-  std::sort(at_fine.receivers.begin(), at_fine.receivers.end());
-  at_fine.receivers.erase(std::unique(at_fine.receivers.begin(), at_fine.receivers.end()),
-                          at_fine.receivers.end());
+  at_coarse.receivers = two.points;
+  const auto& neighbours = two.neighbours;
+  at_fine.receivers = fitted_sources(neighbours);
   const SurfelRadiance a = render_reference(coarse, material, light, at_coarse);
   const SurfelRadiance b = render_reference(fine, material, light, at_fine);
   std::vector<Rgb> at_points, nearest;
@@ -180,4 +111,4 @@ TEST(ReferenceConvergence, RefiningQuadratureAndTexelsChangesLittle) {
 }
 
 }  // namespace
-}  // namespace sss
+}  // namespace sss::test

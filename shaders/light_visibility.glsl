@@ -1,0 +1,45 @@
+// The test of core/light_map.h for whether the light reaches a point, against a map of which
+// surfel each texel sees (light_map_surfel_fs.glsl). Needs light_maps.glsl and
+// surfel_list.glsl.
+
+uniform sampler2D mapSurfel;   // xy: the seen surfel's texel in the surfel list, x < 0: none
+uniform float discRadius;      // mm, every surfel's
+uniform float kappaLimitCell;  // 1/mm: the curvature clamp of a surfel's paraboloid (1 / radius)
+
+// Whether the light reaches point y of a surface with cosine cosI to the light and surface
+// thickness `thickness` (mm): the local surface of the disc the map sees at y's texel
+// (core/light_map.cpp seen_point: the texel centre's ray meets the disc's plane at offset d,
+// lifted kappa |d|^2 / 2 below it) passes within thickness / cos of y along the light, or the
+// texel sees no disc (nothing stands in front).
+bool lightReaches(int light, vec3 y, float cosI, float thickness)
+{
+  vec4 rect = levelRect[light * SSS_MAX_LEVELS];
+  vec2 at = (vec2(dot(y, mapAxisU[light]), dot(y, mapAxisV[light])) - mapCorner[light]) /
+    texelSize[light];
+  if (at.x < 0.0 || at.y < 0.0 || at.x >= rect.z || at.y >= rect.w)
+  {
+    return true;
+  }
+  vec2 seen = texelFetch(mapSurfel, ivec2(rect.xy) + ivec2(at), 0).xy;
+  if (seen.x < 0.0)
+  {
+    return true;
+  }
+  ivec2 s = ivec2(seen);
+  vec3 p = texelFetch(surfelPoint, s, 0).xyz;
+  vec4 shape = texelFetch(surfelShape, s, 0);
+  vec3 n = shape.xyz;
+  vec3 l = lightDirection[light];
+  vec2 plane = mapCorner[light] + (floor(at) + 0.5) * texelSize[light];
+  vec3 centre = plane.x * mapAxisU[light] + plane.y * mapAxisV[light];
+  float cosSeen = dot(n, l);
+  cosSeen = cosSeen < 0.0 ? min(cosSeen, -1e-4) : max(cosSeen, 1e-4);
+  vec3 d = centre + (dot(p - centre, n) / cosSeen) * l - p;
+  // The texel's centre lies on the disc; only rounding can put d past its radius.
+  d *= min(1.0, discRadius / max(length(d), 1e-30));
+  float kappa = clamp(shape.w, -kappaLimitCell, kappaLimitCell);
+  vec3 seenPoint = p + d - 0.5 * kappa * dot(d, d) * n;
+  vec3 seenNormal = normalize(n + kappa * d);
+  float along = dot(seenPoint - y, seenNormal) / max(abs(dot(seenNormal, l)), 0.05);
+  return abs(along) <= thickness / max(cosI, 0.1);
+}

@@ -1,0 +1,134 @@
+// The GPU path's defaults on curved surfaces at every scale: a 5 m sphere against its local
+// closed form, the same points at 50 mm and 2 mm against the CPU reference, and a 30 mm sphere
+// at two samplings against itself.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "error_metric.h"
+#include "gpu_scene.h"
+#include "procedural_shapes.h"
+#include "reference_cache.h"
+#include "reference_renderer.h"
+#include "sphere_cases.h"
+
+namespace sss::test {
+namespace {
+
+const Eigen::Vector3d kAlongZ(0, 0, 1);
+
+// 125,000 points on a Fibonacci lattice of radius 5000 units (48 units apart), lit and seen
+// along +z.
+const SurfelCloud& lattice() {
+  static const SurfelCloud sphere = make_fibonacci_sphere(5000.0, 125000);
+  return sphere;
+}
+
+std::vector<Rgb> at(const std::vector<Rgb>& B, const std::vector<std::size_t>& ids) {
+  std::vector<Rgb> out;
+  for (std::size_t i : ids) out.push_back(B[i]);
+  return out;
+}
+
+// At 1 mm per unit (R = 5 m, points 48 mm apart, far beyond every kernel) B is the local closed
+// form Ft cos R_total / pi at the points with cos(theta) > 0.2.
+class GpuSphereClosedForm : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GpuSphereClosedForm, FiveMetreSphereMeetsTheLocalClosedForm) {
+  const Material material = Material::preset(GetParam(), 1.3);
+  const SurfelCloud& sphere = lattice();
+  const std::vector<std::size_t> ids = sample_of(sphere, 2000, 7, kAlongZ, 0.2);
+  GpuScene scene(sphere, material, {{kAlongZ, 1.0}});
+  const std::vector<Rgb> B = scene.render_B();
+  ASSERT_EQ(B.size(), sphere.size());
+  std::vector<Rgb> expected;
+  for (std::size_t i : ids) expected.push_back(local_closed_form(material, sphere.normals[i], kAlongZ));
+  const ErrorStats e = compare_radiance(at(B, ids), expected);
+  std::printf("[ gpu sphere ] %s, R 5 m, %zu points %.0f mm apart: against Ft cos R_total / pi %s\n",
+              GetParam(), sphere.size(), sphere.mean_spacing(), e.summary().c_str());
+  EXPECT_LT(e.mean, 0.01);
+  EXPECT_LT(e.p99, 0.05);
+}
+
+INSTANTIATE_TEST_SUITE_P(Materials, GpuSphereClosedForm,
+                         ::testing::Values("marble", "skimmilk", "ketchup"),
+                         [](const auto& info) { return std::string(info.param); });
+
+// The same points at 0.01 and 0.0004 mm per unit: R = 50 mm (0.48 mm apart, about z_r) and
+// R = 2 mm (0.02 mm apart, the kernel wider than the sphere), against the reference (cached)
+// at the points the reference does not call dark.
+struct Scaled {
+  const char* material;
+  double mm_per_unit;
+};
+
+void PrintTo(const Scaled& s, std::ostream* os) {
+  *os << s.material << " at " << s.mm_per_unit << " mm per unit";
+}
+
+class GpuSphereAgainstReference : public ::testing::TestWithParam<Scaled> {};
+
+TEST_P(GpuSphereAgainstReference, SamePointsAtAnotherScale) {
+  const Material material = Material::preset(GetParam().material, 1.3, GetParam().mm_per_unit);
+  const SurfelCloud& sphere = lattice();
+  ReferenceSettings settings;
+  settings.receivers = sample_of(sphere, 2000, 11);
+  const SurfelRadiance reference =
+      cached_reference(SSS_TEST_REFERENCE_CACHE, sphere, material, {{kAlongZ, 1.0}}, settings);
+  GpuScene scene(sphere, material, {{kAlongZ, 1.0}});
+  const std::vector<Rgb> B = scene.render_B();
+  ASSERT_EQ(B.size(), sphere.size());
+  const ErrorStats e = compare_radiance(at(B, settings.receivers), at(reference.B, settings.receivers));
+  std::printf("[ gpu sphere ] %s, R %.0f mm, points %.3f mm apart: against the reference %s\n",
+              GetParam().material, 5000 * GetParam().mm_per_unit,
+              sphere.mean_spacing() * GetParam().mm_per_unit, e.summary().c_str());
+  EXPECT_LT(e.mean, 0.01);
+  EXPECT_LT(e.p99, 0.05);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scales, GpuSphereAgainstReference,
+    ::testing::Values(Scaled{"marble", 0.01}, Scaled{"skimmilk", 0.01}, Scaled{"ketchup", 0.01},
+                      Scaled{"marble", 0.0004}, Scaled{"skimmilk", 0.0004},
+                      Scaled{"ketchup", 0.0004}),
+    [](const auto& info) {
+      return std::string(info.param.material) + (info.param.mm_per_unit > 0.001 ? "_50mm" : "_2mm");
+    });
+
+// The truth does not depend on the sampling: a 30 mm sphere sampled 1.26 mm apart (the
+// Stanford bunny's spacing) and 0.4 mm apart gives the same B at the same place.
+class GpuSamplingInvariance : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GpuSamplingInvariance, ThirtyMillimetreSphereAtTwoSamplings) {
+  const TwoSamplings two = thirty_millimetre_spheres();
+  const SurfelCloud &coarse = two.coarse, &fine = two.fine;
+  const Material material = Material::preset(GetParam(), 1.3);
+  const std::vector<DirectionalLight>& light = two.light;
+  const std::vector<std::size_t>& points = two.points;
+  const auto& neighbours = two.neighbours;
+  std::vector<Rgb> coarse_B, fine_B;
+  {
+    GpuScene scene(coarse, material, light);
+    coarse_B = scene.render_B();
+  }
+  {
+    GpuScene scene(fine, material, light);
+    fine_B = scene.render_B();
+  }
+  const ErrorStats e =
+      compare_radiance(at(coarse_B, points), fitted_at(coarse, points, fine, fine_B, neighbours));
+  std::printf("[ gpu sampling ] %s, 30 mm sphere, %.2f mm against %.2f mm apart, at the same "
+              "place: %s\n", GetParam(), coarse.mean_spacing(), fine.mean_spacing(),
+              e.summary().c_str());
+  EXPECT_LT(e.mean, 0.01);
+  EXPECT_LT(e.p99, 0.05);
+}
+
+INSTANTIATE_TEST_SUITE_P(Materials, GpuSamplingInvariance,
+                         ::testing::Values("marble", "skimmilk", "ketchup"),
+                         [](const auto& info) { return std::string(info.param); });
+
+}  // namespace
+}  // namespace sss::test
