@@ -34,10 +34,9 @@ options (default in brackets)
                        skin1 skin2 spectralon wholemilk [marble]
   --mm-per-unit F      millimetres per scene unit, e.g. 1000 for a scan in metres [1]
   --quality Q          interactive | balanced | accurate: how finely B is summed when the
-                       light or material changes (interactive: the pass's defaults, at most
-                       the 2005 paper's cost and more accurate than it, 15-30 % mean error;
-                       balanced: 1-3 %, about 20x slower; accurate: under 1 %, about 60x
-                       slower) [interactive]
+                       light or material changes (balanced: the pass's defaults; interactive
+                       coarser and faster, accurate finer and slower; costs and errors of
+                       each in docs/benchmark/bench.md) [balanced]
   --samples N          sample N points on a PLY mesh's surface instead of its vertices [0]
   --size WxH           window size in pixels [1024x768]
   --keys STRING        press these keys one per frame after the first (scripted demos)
@@ -59,7 +58,7 @@ struct Options {
   std::string input;
   std::string material = "marble";
   double mm_per_unit = 1.0;
-  sss::Quality quality = sss::Quality::Interactive;
+  sss::Quality quality = sss::Quality::Balanced;
   std::size_t samples = 0;
   int width = 1024, height = 768;
   std::string keys;

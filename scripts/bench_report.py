@@ -15,19 +15,21 @@ needs it):
   cloud           name of the point cloud
   points          surfels in the cloud
   material        material preset name
-  strategy        kernel strategy: surfel, grid-near, grid or paper
-  grid_level      virtual grid of 2^grid_level points per axis
-  map_size        largest illumination-map side, texels
-  opening_angle   pyramid walk opening angle
-  group_lengths   largest source group, in diffusion lengths
+  strategy        kernel strategy: near-far or paper
+  map_size        largest light-map side, texels
+  opening_angle   far-field walk opening angle (near-far)
+  cell_samples    points of each cell asked for their light, per light (near-far)
   is_paper        1 for the paper's own setting, else 0
   is_default      1 for the renderer's default setting, else 0
-  bake_s          illumination map and B (steps 1-2) once, seconds
+  bake_s          what a geometry or material change costs before the light's steps (the
+                  near-field table; the paper's grid), seconds
+  light_s         steps 1-2 once (light map, lit cells, B): what a light move costs, seconds
   frame_static_s  one frame with the light static (camera move), seconds
   frame_moving_s  one frame with the light moving (steps 1-3), seconds
   plain_points_s  one frame of plain VTK points of the same cloud in the same run, seconds
-  virtual_points  virtual grid points kept after pruning
-  lit_samples     lit illumination-map texels
+  near_field_mib  GPU memory of the near-field table, MiB
+  virtual_points  virtual grid points kept after pruning (paper)
+  lit_cells       surfel cells the light reaches (near-far), or lit map texels (paper)
   err_mean        per-point relative error against the CPU reference (core/error_metric.h):
   err_p99           mean, 99th percentile and max, as fractions (0.01 = 1 %)
   err_max
@@ -58,17 +60,16 @@ from matplotlib import ticker  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
 TEXT_COLUMNS = ("cloud", "material", "strategy", "kind")
-INT_COLUMNS = ("points", "grid_level", "map_size", "virtual_points", "lit_samples")
+INT_COLUMNS = ("points", "map_size", "cell_samples", "virtual_points", "lit_cells")
 FLAG_COLUMNS = ("is_paper", "is_default")
-COLUMNS = ("cloud", "points", "material", "strategy", "grid_level", "map_size", "opening_angle",
-           "group_lengths", "is_paper", "is_default", "bake_s", "frame_static_s",
-           "frame_moving_s", "plain_points_s", "virtual_points", "lit_samples", "err_mean",
-           "err_p99", "err_max", "err8_mean", "err8_max", "peak_rss_mb", "kind")
+COLUMNS = ("cloud", "points", "material", "strategy", "map_size", "opening_angle",
+           "cell_samples", "is_paper", "is_default", "bake_s", "light_s", "frame_static_s",
+           "frame_moving_s", "plain_points_s", "near_field_mib", "virtual_points", "lit_cells",
+           "err_mean", "err_p99", "err_max", "err8_mean", "err8_max", "peak_rss_mb", "kind")
 KINDS = ("sweep", "scale")
 
 MISSING = "-"
-STRATEGY_MARKERS = OrderedDict([("surfel", "o"), ("grid-near", "s"), ("grid", "^"),
-                                ("paper", "D")])
+STRATEGY_MARKERS = OrderedDict([("near-far", "o"), ("paper", "D")])
 SPARE_MARKERS = ("v", "P", "X", "*", "h", "<", ">")
 
 
@@ -231,34 +232,34 @@ def _by_time(row):
     return (t is None, t if t is not None else 0.0, row["line"])
 
 
-SWEEP_HEADER = ("marks", "strategy", "grid level", "map (texels)", "opening angle",
-                "group lengths", "bake (ms)", "static frame (ms)", "static / plain",
+SWEEP_HEADER = ("marks", "strategy", "map (texels)", "opening angle", "cell samples",
+                "bake (ms)", "light steps (ms)", "static frame (ms)", "static / plain",
                 "moving frame (ms)", "moving / plain", "plain points (ms)", "mean err (%)",
-                "p99 err (%)", "max err (%)", "8-bit mean", "8-bit max", "virtual points",
-                "lit samples", "peak RSS (MiB)")
+                "p99 err (%)", "max err (%)", "8-bit mean", "8-bit max", "near field (MiB)",
+                "virtual points", "lit cells", "peak RSS (MiB)")
 
 
 def sweep_cells(row, front):
-    return (_marks(row, front), row["strategy"] or MISSING, _whole(row["grid_level"]),
-            _whole(row["map_size"]), _figures(row["opening_angle"]),
-            _figures(row["group_lengths"]), _ms(row["bake_s"]), _ms(row["frame_static_s"]),
-            _times(static_ratio(row)), _ms(row["frame_moving_s"]), _times(moving_ratio(row)),
-            _ms(row["plain_points_s"]), _percent(row["err_mean"]), _percent(row["err_p99"]),
-            _percent(row["err_max"]), _figures(row["err8_mean"]), _figures(row["err8_max"]),
-            _count(row["virtual_points"]), _count(row["lit_samples"]),
-            _figures(row["peak_rss_mb"]))
+    return (_marks(row, front), row["strategy"] or MISSING, _whole(row["map_size"]),
+            _figures(row["opening_angle"]), _whole(row["cell_samples"]), _ms(row["bake_s"]),
+            _ms(row["light_s"]), _ms(row["frame_static_s"]), _times(static_ratio(row)),
+            _ms(row["frame_moving_s"]), _times(moving_ratio(row)), _ms(row["plain_points_s"]),
+            _percent(row["err_mean"]), _percent(row["err_p99"]), _percent(row["err_max"]),
+            _figures(row["err8_mean"]), _figures(row["err8_max"]),
+            _figures(row["near_field_mib"]), _count(row["virtual_points"]),
+            _count(row["lit_cells"]), _figures(row["peak_rss_mb"]))
 
 
-SCALE_HEADER = ("points", "strategy", "bake (ms)", "static frame (ms)", "static / plain",
-                "moving frame (ms)", "moving / plain", "plain points (ms)", "mean err (%)",
-                "peak RSS (MiB)")
+SCALE_HEADER = ("points", "strategy", "bake (ms)", "light steps (ms)", "static frame (ms)",
+                "static / plain", "moving frame (ms)", "moving / plain", "plain points (ms)",
+                "near field (MiB)", "peak RSS (MiB)")
 
 
 def scale_cells(row):
     return (_count(row["points"]), row["strategy"] or MISSING, _ms(row["bake_s"]),
-            _ms(row["frame_static_s"]), _times(static_ratio(row)), _ms(row["frame_moving_s"]),
-            _times(moving_ratio(row)), _ms(row["plain_points_s"]), _percent(row["err_mean"]),
-            _figures(row["peak_rss_mb"]))
+            _ms(row["light_s"]), _ms(row["frame_static_s"]), _times(static_ratio(row)),
+            _ms(row["frame_moving_s"]), _times(moving_ratio(row)), _ms(row["plain_points_s"]),
+            _figures(row["near_field_mib"]), _figures(row["peak_rss_mb"]))
 
 
 def markdown(rows, source_name):
@@ -386,7 +387,8 @@ def log_axes(ax):
 
 SCALE_TIMES = (("frame_static_s", "frame, light static"),
                ("frame_moving_s", "frame, light moving"),
-               ("bake_s", "bake (steps 1-2)"),
+               ("bake_s", "bake (near-field table)"),
+               ("light_s", "light steps (1-2)"),
                ("plain_points_s", "plain VTK points frame"))
 
 

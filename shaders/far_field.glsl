@@ -4,9 +4,9 @@
 // of cells as one source, each dipole pole by its own mean and covariance (dipole.glsl), once
 // its spread (twice the RMS distance of its points from their mean) is below openingAngle
 // times its distance from x, its radius spans at most maxGroupDiffusionLengths of every
-// channel whose kernel still matters there, and x lies beyond the clamp of every pole by the
-// poles' spread (where the expansion holds; the reference's tree asks the same). The GPU
-// form of the CPU reference's source tree (core/source_tree.h). Needs dipole.glsl.
+// channel whose kernel still matters there, and each pole's spread is below openingAngle of
+// its distance, with x beyond the clamp of every pole (secondOrderHolds). The GPU form of the
+// CPU reference's source tree (core/source_tree.h). Needs dipole.glsl.
 
 uniform sampler2D sourcePoint;        // xyz: power-weighted mean point, w: summed power
 uniform sampler2D sourcePower;        // rgb: E dA
@@ -67,13 +67,13 @@ vec3 farFieldB(vec3 x)
       SourceGroup group;
       group.p = point.xyz;
       group.n = normal.xyz;
-      group.reach = size;
+      group.reach = level == 0 ? size : 0.0;  // a cell's disc; a group passed secondOrderHolds
       group.Cpp = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
       group.S = mat3(c1.z, c2.y, c2.z, c2.y, c1.w, c2.w, c2.z, c2.w, c2.x);
       group.Cnn = mat3(c3.x, c3.w, c4.x, c3.w, c3.y, c4.y, c4.x, c4.y, c3.z);
       float spread = 2.0 * sqrt(max(c0.x + c0.y + c0.z, 0.0));
       bool smallEnough = spread < openingAngle * d &&
-        size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x);
+        size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x, openingAngle);
       if (level == 0 || (smallEnough && !straddles) || depth > 60)
       {
         vec3 power = texelFetch(sourcePower, texel, 0).rgb;

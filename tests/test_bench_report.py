@@ -24,11 +24,13 @@ def row(name, cloud, material, strategy, moving_s, err_mean, plain_s=0.04, paper
     points = points or (TORUS if cloud == "torus" else BUNNY)
     return name, {
         "cloud": cloud, "points": points, "material": material, "strategy": strategy,
-        "grid_level": 5 if strategy != "surfel" else "", "map_size": map_size,
-        "opening_angle": 0.5, "group_lengths": 2, "is_paper": paper, "is_default": default,
-        "bake_s": 0.9 * moving_s if isinstance(moving_s, float) else "", "frame_static_s": 0.044,
-        "frame_moving_s": moving_s, "plain_points_s": plain_s,
-        "virtual_points": 1200 if strategy != "surfel" else "", "lit_samples": 250000,
+        "map_size": map_size, "opening_angle": 0.4 if strategy != "paper" else "",
+        "cell_samples": 64 if strategy != "paper" else "", "is_paper": paper,
+        "is_default": default, "bake_s": 0.5 * moving_s if isinstance(moving_s, float) else "",
+        "light_s": 0.9 * moving_s if isinstance(moving_s, float) else "",
+        "frame_static_s": 0.044, "frame_moving_s": moving_s, "plain_points_s": plain_s,
+        "near_field_mib": 12.5 if strategy != "paper" else "",
+        "virtual_points": 1200 if strategy == "paper" else "", "lit_cells": 25000,
         "err_mean": err_mean, "err_p99": "" if err_mean == "" else 3 * err_mean,
         "err_max": "" if err_mean == "" else 6 * err_mean,
         "err8_mean": "" if err_mean == "" else 0.4, "err8_max": "" if err_mean == "" else 9,
@@ -36,35 +38,35 @@ def row(name, cloud, material, strategy, moving_s, err_mean, plain_s=0.04, paper
 
 
 # Hand-checked fronts (time ratio = moving / plain, error mean):
-# torus marble: paper 2.5x 45.6 %, grid 7.5x 17.7 %, surfel-1024 20x 3 %, default 65x 0.35 %
-# are each beaten by none; grid-near (67.5x, 1.2 %) is beaten by the default, the second grid
-# row (same time, 20 %) by the first, the row without an error is never on it.
+# torus marble: paper 2.5x 45.6 %, coarse 7.5x 17.7 %, map-1024 20x 3 %, default 65x 0.35 %
+# are each beaten by none; a slower row (67.5x, 1.2 %) is beaten by the default, the second
+# coarse row (same time, 20 %) by the first, the row without an error is never on it.
 # torus ketchup: alone, so on its own front although torus marble's default beats it.
 # bunny marble: default and paper on the front; the row without a plain time is not.
 # sphere marble: a NaN error is never on the front, an infinite one is beaten by any finite one.
 ROWS = [
-    row("torus_default", "torus", "marble", "surfel", 2.6, 0.0035, default=1),
-    row("torus_grid_near", "torus", "marble", "grid-near", 2.7, 0.012),
-    row("torus_grid", "torus", "marble", "grid", 0.3, 0.177),
+    row("torus_default", "torus", "marble", "near-far", 2.6, 0.0035, default=1),
+    row("torus_slower", "torus", "marble", "near-far", 2.7, 0.012),
+    row("torus_coarse", "torus", "marble", "near-far", 0.3, 0.177),
     row("torus_paper", "torus", "marble", "paper", 0.1, 0.456, paper=1, map_size=512),
-    row("torus_map_1024", "torus", "marble", "surfel", 0.8, 0.03, map_size=1024),
-    row("torus_no_error", "torus", "marble", "surfel", 1.0, ""),
-    row("torus_grid_worse", "torus", "marble", "grid", 0.3, 0.2),
-    row("torus_ketchup", "torus", "ketchup", "surfel", 4.2, 0.0039, default=1),
-    row("bunny_default", "bunny", "marble", "surfel", 41.0, 0.004, plain_s=0.05, default=1),
+    row("torus_map_1024", "torus", "marble", "near-far", 0.8, 0.03, map_size=1024),
+    row("torus_no_error", "torus", "marble", "near-far", 1.0, ""),
+    row("torus_coarse_worse", "torus", "marble", "near-far", 0.3, 0.2),
+    row("torus_ketchup", "torus", "ketchup", "near-far", 4.2, 0.0039, default=1),
+    row("bunny_default", "bunny", "marble", "near-far", 41.0, 0.004, plain_s=0.05, default=1),
     row("bunny_paper", "bunny", "marble", "paper", 0.2, 0.5, plain_s=0.05, paper=1),
-    row("bunny_no_plain", "bunny", "marble", "grid-near", 3.0, 0.01, plain_s=""),
-    row("sphere_nan", "sphere", "marble", "grid", 0.04, float("nan"), points=500),
-    row("sphere_inf", "sphere", "marble", "grid", 0.16, float("inf"), points=500),
-    row("sphere_fine", "sphere", "marble", "surfel", 0.12, 0.01, points=500),
-    row("scale_1k", "torus", "marble", "surfel", 0.1, 0.003, points=1000, kind="scale",
+    row("bunny_no_plain", "bunny", "marble", "near-far", 3.0, 0.01, plain_s=""),
+    row("sphere_nan", "sphere", "marble", "near-far", 0.04, float("nan"), points=500),
+    row("sphere_inf", "sphere", "marble", "near-far", 0.16, float("inf"), points=500),
+    row("sphere_fine", "sphere", "marble", "near-far", 0.12, 0.01, points=500),
+    row("scale_1k", "torus", "marble", "near-far", 0.1, 0.003, points=1000, kind="scale",
         default=1),
-    row("scale_10k", "torus", "marble", "surfel", 1.1, 0.0033, points=10000, kind="scale",
+    row("scale_10k", "torus", "marble", "near-far", 1.1, 0.0033, points=10000, kind="scale",
         default=1, rss=""),
-    row("scale_100k", "torus", "marble", "surfel", 12.0, 0.0036, points=100000, kind="scale",
+    row("scale_100k", "torus", "marble", "near-far", 12.0, 0.0036, points=100000, kind="scale",
         default=1, rss=900.0),
 ]
-FRONT = {"torus_default", "torus_grid", "torus_paper", "torus_map_1024", "torus_ketchup",
+FRONT = {"torus_default", "torus_coarse", "torus_paper", "torus_map_1024", "torus_ketchup",
          "bunny_default", "bunny_paper", "sphere_fine"}
 
 
@@ -131,7 +133,7 @@ class BenchReport(unittest.TestCase):
         self.assertEqual([r[moving_ms] for r in torus],
                          ["100", "300", "300", "800", "1,000", "2,600", "2,700"])
         self.assertEqual([r[strategy] for r in torus],
-                         ["paper", "grid", "grid", "surfel", "surfel", "surfel", "grid-near"])
+                         ["paper"] + ["near-far"] * 6)
         self.assertEqual([r[marks] for r in torus],
                          ["front, paper", "front", "", "front", "", "front, default", ""])
         self.assertEqual(torus[0][ratio], "2.5x")
@@ -143,8 +145,8 @@ class BenchReport(unittest.TestCase):
 
         bunny = section_rows(md, "### bunny, marble (34,834 points)")
         self.assertEqual([(r[strategy], r[marks]) for r in bunny],
-                         [("paper", "front, paper"), ("grid-near", ""),
-                          ("surfel", "front, default")])
+                         [("paper", "front, paper"), ("near-far", ""),
+                          ("near-far", "front, default")])
         self.assertEqual(bunny[1][ratio], "-")  # no plain points time
 
         scale = section_rows(md, "### torus, marble")
@@ -167,7 +169,7 @@ class BenchReport(unittest.TestCase):
         self.assertEqual(result.returncode, 2)
         self.assertIn("missing columns: err_p99", result.stderr)
 
-        bad = [row("x", "torus", "marble", "surfel", "fast", 0.01)]
+        bad = [row("x", "torus", "marble", "near-far", "fast", 0.01)]
         write_csv(self.csv, bad)
         result = self.run_script(self.csv, "--out-dir", self.out)
         self.assertEqual(result.returncode, 2)

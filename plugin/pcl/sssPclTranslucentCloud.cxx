@@ -32,9 +32,9 @@ struct QualitySettings {
 
 QualitySettings settings_of(Quality quality) {
   switch (quality) {
-    case Quality::Interactive: return {8, 1024, 1.0};
+    case Quality::Interactive: return {16, 2048, 0.6};
     case Quality::Balanced: break;
-    case Quality::Accurate: return {32, 4096, 0.3};
+    case Quality::Accurate: return {128, 4096, 0.3};
   }
   vtkNew<vtkSubsurfacePass> defaults;
   return {defaults->GetCellSamples(), defaults->GetMaxMapSize(), defaults->GetOpeningAngle()};

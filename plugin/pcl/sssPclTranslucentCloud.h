@@ -29,9 +29,9 @@ namespace sss {
 // re-runs it), trading accuracy for time. Costs and errors per setting are in
 // docs/benchmark/bench.md.
 enum class Quality {
-  Interactive,  // 8 samples per cell, far-field opening angle 1, maps of at most 1024 texels
-  Balanced,     // the pass's defaults (16 samples, opening angle 0.5, 2048 texels)
-  Accurate,     // 32 samples per cell, opening angle 0.3, maps of at most 4096 texels
+  Interactive,  // 16 samples per cell, far-field opening angle 0.6, maps of at most 2048 texels
+  Balanced,     // the pass's defaults (64 samples, opening angle 0.4, 4096 texels)
+  Accurate,     // 128 samples per cell, opening angle 0.3, maps of at most 4096 texels
 };
 const char* qualityName(Quality quality);
 
