@@ -42,6 +42,7 @@ namespace
 constexpr double kSupportFraction = 1e-7;
 constexpr int kFresnelTableSize = 256;
 constexpr int kEntriesWidth = 4096;
+constexpr int kWalkRoot = 7;  // pyramid level whose nodes the far field's quads start from
 
 struct Rect
 {
@@ -601,10 +602,8 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
     gather->SetUniformi(source_names[k], g.source[k]->GetTextureUnit());
   }
   std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f);
-  std::vector<int> level_count(kMaxLights, 0);
   for (int l = 0; l < lights; ++l)
   {
-    level_count[l] = static_cast<int>(g.levels[l].size());
     for (std::size_t L = 0; L < g.levels[l].size() && L < std::size_t(kMaxLevels); ++L)
     {
       const Rect& r = g.levels[l][L];
@@ -615,15 +614,44 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
       out[3] = float(r.height);
     }
   }
-  gather->SetUniform1iv("sourceLevelCount", kMaxLights, level_count.data());
   gather->SetUniform4fv("sourceLevelRect", kMaxLights * kMaxLevels, rects.data());
   gather->SetUniformf("openingAngle", static_cast<float>(g.settings.opening_angle));
   gather->SetUniformf(
     "maxGroupDiffusionLengths", static_cast<float>(g.settings.max_group_diffusion_lengths));
   gather->SetUniformf("supportRadius", static_cast<float>(g.support));
-  gather->SetUniformi("addFarField", g.split.has_far && lights > 0 ? 1 : 0);
   state->vtkglViewport(0, 0, g.width, g.height);
+  vtkOpenGLState::ScopedglEnableDisable blend_saved(state, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blend_function_saved(state);
+  state->vtkglDisable(GL_BLEND);
+  gather->SetUniformi("addNearField", 1);
+  gather->SetUniformi("addFarField", 0);
   g.gather_quad->Render();
+  if (g.split.has_far && lights > 0)
+  {
+    // The far field in pieces: one quad per light and node of its pyramid's level kWalkRoot
+    // (or its top), so that no fragment walks more than (4^(kWalkRoot + 1) - 1) / 3 nodes;
+    // llvmpipe stops a shader invocation's loops after 65,535 iterations in all.
+    gather->SetUniformi("addNearField", 0);
+    gather->SetUniformi("addFarField", 1);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFunc(GL_ONE, GL_ONE);
+    for (int l = 0; l < lights; ++l)
+    {
+      const int level = std::min(static_cast<int>(g.levels[l].size()) - 1, kWalkRoot);
+      const Rect& roots = g.levels[l][level];
+      gather->SetUniformi("walkLight", l);
+      for (int y = 0; y < roots.height; ++y)
+      {
+        for (int x = 0; x < roots.width; ++x)
+        {
+          const int root[2] = { x, y };
+          gather->SetUniform2i("walkRoot", root);
+          gather->SetUniformi("walkRootLevel", level);
+          g.gather_quad->Render();
+        }
+      }
+    }
+  }
   for (auto& t : g.source)
   {
     t->Deactivate();

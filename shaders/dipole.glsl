@@ -66,22 +66,20 @@ struct SourceGroup
 
 float poleSpread(SourceGroup g, float t)
 {
-  float trace = (g.Cpp[0][0] + g.Cpp[1][1] + g.Cpp[2][2]) + t * (g.S[0][0] + g.S[1][1] + g.S[2][2]) +
-    t * t * (g.Cnn[0][0] + g.Cnn[1][1] + g.Cnn[2][2]);
+  float trace = (g.Cpp[0][0] + g.Cpp[1][1] + g.Cpp[2][2]) +
+    t * (g.S[0][0] + g.S[1][1] + g.S[2][2]) + t * t * (g.Cnn[0][0] + g.Cnn[1][1] + g.Cnn[2][2]);
   return 2.0 * sqrt(max(trace, 0.0));
 }
 
-// Whether poleTermSecondOrder expands both poles of every channel well at x: each pole's
-// mean farther from x than its planar minimum distance plus the poles' spread (twice their
-// RMS distance from the mean; then no pole of the group reaches the clamp), and that spread
-// below `angle` times the distance (the reference's tree asks the same of its poles).
-bool secondOrderHolds(SourceGroup g, vec3 x, float angle)
+// Whether poleTermSecondOrder expands both poles of every channel at x: each pole's mean
+// farther from x than its planar minimum distance plus the poles' spread (twice their RMS
+// distance from the mean), so that no pole of the group reaches the clamp.
+bool secondOrderHolds(SourceGroup g, vec3 x)
 {
   for (int c = 0; c < 3; ++c)
   {
-    float dR = length(g.p - zR[c] * g.n - x), dV = length(g.p + zV[c] * g.n - x);
-    float spreadR = poleSpread(g, -zR[c]), spreadV = poleSpread(g, zV[c]);
-    if (dR <= zR[c] + spreadR || dV <= zV[c] + spreadV)
+    if (length(g.p - zR[c] * g.n - x) <= zR[c] + poleSpread(g, -zR[c]) ||
+      length(g.p + zV[c] * g.n - x) <= zV[c] + poleSpread(g, zV[c]))
     {
       return false;
     }

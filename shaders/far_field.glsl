@@ -4,9 +4,9 @@
 // of cells as one source, each dipole pole by its own mean and covariance (dipole.glsl), once
 // its spread (twice the RMS distance of its points from their mean) is below openingAngle
 // times its distance from x, its radius spans at most maxGroupDiffusionLengths of every
-// channel whose kernel still matters there, and each pole's spread is below openingAngle of
-// its distance, with x beyond the clamp of every pole (secondOrderHolds). The GPU form of the
-// CPU reference's source tree (core/source_tree.h). Needs dipole.glsl.
+// channel whose kernel still matters there, and x lies beyond the clamp of every pole by the
+// poles' spread (secondOrderHolds). The GPU form of the CPU reference's source tree
+// (core/source_tree.h). Needs dipole.glsl.
 
 uniform sampler2D sourcePoint;        // xyz: power-weighted mean point, w: summed power
 uniform sampler2D sourcePower;        // rgb: E dA
@@ -16,78 +16,77 @@ uniform sampler2D sourceCovariance1;  // points: xz, yz; S: xx, yy
 uniform sampler2D sourceCovariance2;  // S: zz, xy, xz, yz
 uniform sampler2D sourceCovariance3;  // normals: xx, yy, zz, xy
 uniform sampler2D sourceCovariance4;  // normals: xz, yz
-uniform int sourceLevelCount[SSS_MAX_LIGHTS];
 uniform vec4 sourceLevelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
 uniform float openingAngle;
 uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral
 uniform float farFrom;        // mm
 
-vec3 farFieldB(vec3 x)
+// The part of the far field at x from the cells under one node `root` (xy: texel in its
+// level, z: level) of light `light`'s pyramid. Step 2 sums it over the nodes of a level low
+// enough that no walk visits more than 21,845 nodes: llvmpipe ends a shader invocation's
+// loops after 65,535 iterations in all, which a walk of a whole large pyramid can exceed.
+vec3 farFieldB(vec3 x, int light, ivec3 root)
 {
   vec3 sum = vec3(0.0);
   ivec3 stack[64];
-  for (int light = 0; light < lightCount; ++light)
+  int base = light * SSS_MAX_LEVELS;
+  int depth = 0;
+  stack[depth++] = root;
+  while (depth > 0)
   {
-    int top = sourceLevelCount[light] - 1;
-    int base = light * SSS_MAX_LEVELS;
-    int depth = 0;
-    stack[depth++] = ivec3(0, 0, top);
-    while (depth > 0)
+    ivec3 node = stack[--depth];
+    int level = node.z;
+    ivec2 texel = ivec2(sourceLevelRect[base + level].xy) + node.xy;
+    vec4 point = texelFetch(sourcePoint, texel, 0);
+    if (point.w <= 0.0)
     {
-      ivec3 node = stack[--depth];
-      int level = node.z;
-      ivec2 texel = ivec2(sourceLevelRect[base + level].xy) + node.xy;
-      vec4 point = texelFetch(sourcePoint, texel, 0);
-      if (point.w <= 0.0)
+      continue;
+    }
+    vec4 normal = texelFetch(sourceNormal, texel, 0);
+    float size = normal.w;
+    float d = distance(x, point.xyz);
+    if (d - size > supportRadius || d + size < farFrom || (level == 0 && d < farFrom))
+    {
+      continue;
+    }
+    bool straddles = d - size < farFrom;  // holds cells nearer than farFrom: open it
+    float sTrSignificant = 0.0;  // fastest decay among channels not yet below e^-16
+    for (int c = 0; c < 3; ++c)
+    {
+      if (sTr[c] * (d - size) < 16.0)
       {
-        continue;
+        sTrSignificant = max(sTrSignificant, sTr[c]);
       }
-      vec4 normal = texelFetch(sourceNormal, texel, 0);
-      float size = normal.w;
-      float d = distance(x, point.xyz);
-      if (d - size > supportRadius || d + size < farFrom || (level == 0 && d < farFrom))
+    }
+    vec4 c0 = texelFetch(sourceCovariance0, texel, 0);
+    vec4 c1 = texelFetch(sourceCovariance1, texel, 0);
+    vec4 c2 = texelFetch(sourceCovariance2, texel, 0);
+    vec4 c3 = texelFetch(sourceCovariance3, texel, 0);
+    vec4 c4 = texelFetch(sourceCovariance4, texel, 0);
+    SourceGroup group;
+    group.p = point.xyz;
+    group.n = normal.xyz;
+    group.reach = level == 0 ? size : 0.0;  // a cell's disc; a group passed secondOrderHolds
+    group.Cpp = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
+    group.S = mat3(c1.z, c2.y, c2.z, c2.y, c1.w, c2.w, c2.z, c2.w, c2.x);
+    group.Cnn = mat3(c3.x, c3.w, c4.x, c3.w, c3.y, c4.y, c4.x, c4.y, c3.z);
+    float spread = 2.0 * sqrt(max(c0.x + c0.y + c0.z, 0.0));
+    bool smallEnough = spread < openingAngle * d &&
+      size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x);
+    if (level == 0 || (smallEnough && !straddles) || depth > 60)
+    {
+      vec3 power = texelFetch(sourcePower, texel, 0).rgb;
+      sum += power * dipoleRdSecondOrder(group, x);
+      continue;
+    }
+    ivec2 childSize = ivec2(sourceLevelRect[base + level - 1].zw);
+    for (int k = 3; k >= 0; --k)
+    {
+      ivec2 child = 2 * node.xy + ivec2(k & 1, k >> 1);
+      if (child.x < childSize.x && child.y < childSize.y)
       {
-        continue;
-      }
-      bool straddles = d - size < farFrom;  // holds cells nearer than farFrom: open it
-      float sTrSignificant = 0.0;  // fastest decay among channels not yet below e^-16
-      for (int c = 0; c < 3; ++c)
-      {
-        if (sTr[c] * (d - size) < 16.0)
-        {
-          sTrSignificant = max(sTrSignificant, sTr[c]);
-        }
-      }
-      vec4 c0 = texelFetch(sourceCovariance0, texel, 0);
-      vec4 c1 = texelFetch(sourceCovariance1, texel, 0);
-      vec4 c2 = texelFetch(sourceCovariance2, texel, 0);
-      vec4 c3 = texelFetch(sourceCovariance3, texel, 0);
-      vec4 c4 = texelFetch(sourceCovariance4, texel, 0);
-      SourceGroup group;
-      group.p = point.xyz;
-      group.n = normal.xyz;
-      group.reach = level == 0 ? size : 0.0;  // a cell's disc; a group passed secondOrderHolds
-      group.Cpp = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
-      group.S = mat3(c1.z, c2.y, c2.z, c2.y, c1.w, c2.w, c2.z, c2.w, c2.x);
-      group.Cnn = mat3(c3.x, c3.w, c4.x, c3.w, c3.y, c4.y, c4.x, c4.y, c3.z);
-      float spread = 2.0 * sqrt(max(c0.x + c0.y + c0.z, 0.0));
-      bool smallEnough = spread < openingAngle * d &&
-        size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x, openingAngle);
-      if (level == 0 || (smallEnough && !straddles) || depth > 60)
-      {
-        vec3 power = texelFetch(sourcePower, texel, 0).rgb;
-        sum += power * dipoleRdSecondOrder(group, x);
-        continue;
-      }
-      ivec2 childSize = ivec2(sourceLevelRect[base + level - 1].zw);
-      for (int k = 3; k >= 0; --k)
-      {
-        ivec2 child = 2 * node.xy + ivec2(k & 1, k >> 1);
-        if (child.x < childSize.x && child.y < childSize.y)
-        {
-          stack[depth++] = ivec3(child, level - 1);
-        }
+        stack[depth++] = ivec3(child, level - 1);
       }
     }
   }

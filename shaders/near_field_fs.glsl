@@ -1,11 +1,15 @@
 //VTK::System::Dec
-// Step 2, at every surfel: the near field from its row of the table, plus the far field by a
-// walk of the lights' source pyramids when the kernel reaches past the near field. Drawn as
-// one quad over the surfel list.
+// Step 2, at every surfel: the near field from its row of the table (one quad over the surfel
+// list), then the far field when the kernel reaches past it, one quad per node of a light's
+// pyramid whose cells it sums (far_field.glsl), added by blending.
 
 in vec2 texCoord;  // over the surfel list
 
+uniform bool addNearField;
 uniform bool addFarField;
+uniform int walkLight;
+uniform ivec2 walkRoot;  // a node of walkLight's pyramid: its texel in level walkRootLevel
+uniform int walkRootLevel;
 
 //SSS::Gather::Dec
 
@@ -18,11 +22,14 @@ void main()
   vec3 B = vec3(0.0);
   if (point.w > 0.0)
   {
-    B = nearFieldB(at);
+    if (addNearField)
+    {
+      B = nearFieldB(at);
+    }
     if (addFarField)
     {
-      B += farFieldB(point.xyz);
+      B += farFieldB(point.xyz, walkLight, ivec3(walkRoot, walkRootLevel));
     }
   }
-  gl_FragData[0] = vec4(B, 1.0);
+  gl_FragData[0] = vec4(B, addNearField ? 1.0 : 0.0);
 }

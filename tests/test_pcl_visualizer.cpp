@@ -136,7 +136,7 @@ TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
   std::printf("ketchup: summed B red / blue = %.1f\n", red / blue);
   EXPECT_GT(red, 20.0 * blue);
   handle->setQuality(sss::Quality::Accurate);
-  EXPECT_EQ(handle->pass()->GetCellSamples(), 32);
+  EXPECT_EQ(handle->pass()->GetCellSamples(), 128);
   EXPECT_EQ(handle->pass()->GetMaxMapSize(), 4096);
   EXPECT_EQ(handle->pass()->GetOpeningAngle(), 0.3);
   handle->setQuality(sss::Quality::Balanced);  // the pass's defaults
