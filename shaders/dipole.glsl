@@ -62,12 +62,12 @@ struct SourceGroup
   vec3 n;
   float reach;  // the sources lie within it of p (a cell: its disc radius)
   mat3 Cpp, S, Cnn;
+  vec3 traces;  // of Cpp, S and Cnn
 };
 
 float poleSpread(SourceGroup g, float t)
 {
-  float trace = (g.Cpp[0][0] + g.Cpp[1][1] + g.Cpp[2][2]) +
-    t * (g.S[0][0] + g.S[1][1] + g.S[2][2]) + t * t * (g.Cnn[0][0] + g.Cnn[1][1] + g.Cnn[2][2]);
+  float trace = g.traces.x + t * g.traces.y + t * t * g.traces.z;
   return 2.0 * sqrt(max(trace, 0.0));
 }
 

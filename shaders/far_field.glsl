@@ -71,7 +71,8 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
     group.Cpp = mat3(c0.x, c0.w, c1.x, c0.w, c0.y, c1.y, c1.x, c1.y, c0.z);
     group.S = mat3(c1.z, c2.y, c2.z, c2.y, c1.w, c2.w, c2.z, c2.w, c2.x);
     group.Cnn = mat3(c3.x, c3.w, c4.x, c3.w, c3.y, c4.y, c4.x, c4.y, c3.z);
-    float spread = 2.0 * sqrt(max(c0.x + c0.y + c0.z, 0.0));
+    group.traces = vec3(c0.x + c0.y + c0.z, c1.z + c1.w + c2.x, c3.x + c3.y + c3.z);
+    float spread = 2.0 * sqrt(max(group.traces.x, 0.0));
     bool smallEnough = spread < openingAngle * d &&
       size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x);
     if (level == 0 || (smallEnough && !straddles) || depth > 60)

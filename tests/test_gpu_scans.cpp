@@ -4,10 +4,8 @@
 // the same tile shifted to the origin.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 
 #include "cloud_input.h"
 #include "error_metric.h"
@@ -15,6 +13,7 @@
 #include "reference_cache.h"
 #include "reference_renderer.h"
 #include "scan_io.h"
+#include "sphere_cases.h"
 #include "stopwatch.h"
 
 namespace sss::test {
@@ -41,17 +40,6 @@ SurfelCloud load_scan(const std::string& path) {
   return cloud;
 }
 
-// 3000 of the cloud's points, drawn with a fixed seed.
-std::vector<std::size_t> receivers_of(const SurfelCloud& cloud) {
-  std::vector<std::size_t> ids(cloud.size());
-  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
-  std::mt19937 rng(1);
-  std::shuffle(ids.begin(), ids.end(), rng);
-  ids.resize(std::min<std::size_t>(3000, ids.size()));
-  std::sort(ids.begin(), ids.end());
-  return ids;
-}
-
 class GpuVsReference : public ::testing::TestWithParam<ScanCase> {};
 
 // DESIGN section 7 metric at 3000 points of each scan, the reference cached per scan,
@@ -67,7 +55,7 @@ TEST_P(GpuVsReference, MeetsItsBars) {
   const Material material = Material::preset(c.material, 1.3, 1000.0);
   const std::vector<DirectionalLight> lights{{c.light, 1.0}};
   ReferenceSettings settings;
-  settings.receivers = receivers_of(cloud);
+  settings.receivers = sample_of(cloud, 3000, 1);  // 3000 points, a fixed seed
   Stopwatch clock;
   const SurfelRadiance reference =
       cached_reference(SSS_TEST_REFERENCE_CACHE, cloud, material, lights, settings);
