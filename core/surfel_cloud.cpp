@@ -42,6 +42,20 @@ CloudReport SurfelCloud::validate() {
         << positions.size() << " positions";
     throw std::invalid_argument(msg.str());
   }
+  if (!radii.empty() && radii.size() != positions.size()) {
+    std::ostringstream msg;
+    msg << "[sss::SurfelCloud::validate] " << radii.size() << " radii for " << positions.size()
+        << " positions";
+    throw std::invalid_argument(msg.str());
+  }
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    if (!std::isfinite(radii[i]) || radii[i] <= 0.0) {
+      std::ostringstream msg;
+      msg << "[sss::SurfelCloud::validate] radius " << radii[i] << " of point " << i
+          << " must be finite and > 0";
+      throw std::invalid_argument(msg.str());
+    }
+  }
   if (!positions.empty() && (!std::isfinite(radius) || radius <= 0.0)) {
     std::ostringstream msg;
     msg << "[sss::SurfelCloud::validate] radius = " << radius << " must be finite and > 0";
@@ -79,6 +93,7 @@ CloudReport SurfelCloud::validate() {
     positions[out] = positions[i];
     normals[out] = normals[i] / length;
     if (!albedo.empty()) albedo[out] = albedo[i];
+    if (!radii.empty()) radii[out] = radii[i];
     const std::size_t original = had_index ? input_index[i] : i;
     if (input_index.size() <= out) input_index.resize(out + 1);
     input_index[out] = original;
@@ -87,6 +102,7 @@ CloudReport SurfelCloud::validate() {
   positions.resize(out);
   normals.resize(out);
   if (!albedo.empty()) albedo.resize(out);
+  if (!radii.empty()) radii.resize(out);
   input_index.resize(out);
   report.kept = out;
   return report;

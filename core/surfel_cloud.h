@@ -1,4 +1,4 @@
-// Surfels: oriented discs of one radius, with an optional per-point albedo.
+// Surfels: oriented discs of one radius or one each, with an optional per-point albedo.
 #pragma once
 
 #include <Eigen/Core>
@@ -36,11 +36,13 @@ class SurfelCloud {
   std::vector<Eigen::Vector3d> positions;  // scene units
   std::vector<Eigen::Vector3d> normals;
   std::vector<Rgb> albedo;                 // empty, or one per point (each channel in [0, 1])
-  double radius = 0.0;                     // disc radius, scene units
+  double radius = 0.0;                     // disc radius, scene units: light maps and cells use it
+  std::vector<double> radii;               // empty, or each disc's own radius in the camera view
   std::vector<std::size_t> input_index;    // input position of each kept point
 
   std::size_t size() const { return positions.size(); }
   bool empty() const { return positions.empty(); }
+  double radius_of(std::size_t i) const { return radii.empty() ? radius : radii[i]; }
 
   // Drops points with a non-finite position or normal or a normal shorter than 1e-12,
   // normalises the rest, fills input_index. Throws std::invalid_argument (naming the value)
