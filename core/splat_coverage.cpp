@@ -297,4 +297,12 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
   return out;
 }
 
+SplatRadii assign_splat_radii(SurfelCloud& cloud, SplatRadiusMode mode, double coverage_target,
+                              double scale) {
+  SplatRadii radii = choose_splat_radii(cloud, mode, coverage_target, scale);
+  cloud.radius = radii.radius;
+  cloud.radii = radii.per_point;
+  return radii;
+}
+
 }  // namespace sss

@@ -58,6 +58,10 @@ constexpr double kDefaultCoverageTarget = 1e-4;
 SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode,
                               double coverage_target = kDefaultCoverageTarget, double scale = 1.0);
 
+// Sets cloud.radius and cloud.radii from choose_splat_radii and returns what it found.
+SplatRadii assign_splat_radii(SurfelCloud& cloud, SplatRadiusMode mode = SplatRadiusMode::Automatic,
+                              double coverage_target = kDefaultCoverageTarget, double scale = 1.0);
+
 // The area of polygon P within distance r of the origin.
 double area_within(const Polygon& polygon, double r);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "material.h"
+#include "surfel_cloud.h"
 
 class vtkSubsurfacePass;
 
@@ -38,7 +39,10 @@ struct Options {
   std::optional<double> opening_angle, group_diffusion_lengths, texel_per_radius;
   double exposure = 0.0;  // 0: automatic
   int frames = 0;
-  double radius_scale = 1.5;
+  double radius_scale = 1.0;
+  double coverage_target = 1e-4;       // uncovered area fraction the radius may leave
+  std::string radius_mode = "automatic";  // automatic, uniform, per-point
+  std::string splatting = "blended";      // blended, discs
   std::size_t mesh_samples = 0;
   bool help = false;
 };
@@ -48,6 +52,10 @@ Options parse(int argc, char** argv);
 
 // The pass's settings given on the command line, onto `pass`; the rest keep its defaults.
 void apply_pass_settings(const Options& o, vtkSubsurfacePass* pass);
+
+// The cloud's disc radii by --radius-mode, --coverage and --radius-scale (splat_coverage.h);
+// returns a line saying what was chosen.
+std::string apply_splat_radii(const Options& o, SurfelCloud& cloud);
 
 // The value of a numeric flag; throws std::invalid_argument naming the flag otherwise.
 double number(const std::string& flag, const std::string& text);

@@ -138,7 +138,7 @@ int run(const Options& o) {
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = std::move(loaded.cloud);
   }
-  cloud.radius *= o.radius_scale;
+  std::fprintf(stderr, "%s\n", sss::cli::apply_splat_radii(o, cloud).c_str());
   timings.load = clock.lap();
   std::fprintf(stderr, "%zu surfels (radius %g), %s, %s method on %s\n", cloud.size(),
                cloud.radius, material.name.c_str(), o.method.c_str(), o.backend.c_str());
@@ -151,6 +151,7 @@ int run(const Options& o) {
   vtkSubsurfacePass* pass = scene.pass;
   vtkActor* actor = scene.actor;
   sss::cli::apply_pass_settings(o, pass);
+  if (o.splatting == "discs") scene.mapper->SetSplattingToDiscs();
   pass->SetExposure(o.exposure);
   pass->SetCaptureLinearImage(!o.linear_pfm.empty() || o.exposure == 0.0);
   scene.aim_camera(cloud.bounds().center(), o.view_dir, o.up, o.ortho);

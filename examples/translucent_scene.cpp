@@ -33,6 +33,13 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud) {
   auto polydata = vtkSmartPointer<vtkPolyData>::New();
   polydata->SetPoints(points);
   polydata->GetPointData()->SetNormals(normals);
+  if (!cloud.radii.empty()) {
+    vtkNew<vtkFloatArray> radii;
+    radii->SetName(kRadiusArray);
+    radii->SetNumberOfTuples(static_cast<vtkIdType>(cloud.size()));
+    for (std::size_t i = 0; i < cloud.size(); ++i) radii->SetValue(static_cast<vtkIdType>(i), cloud.radii[i]);
+    polydata->GetPointData()->AddArray(radii);
+  }
   if (!cloud.albedo.empty()) {  // the albedo back as the colours the mapper passes on
     vtkNew<vtkUnsignedCharArray> colours;
     colours->SetName("Colors");
@@ -64,6 +71,7 @@ TranslucentScene::TranslucentScene(vtkRenderWindow* w, const SurfelCloud& cloud,
   }
   mapper->SetInputData(polydata);
   mapper->SetRadius(cloud.radius);
+  mapper->SetRadiusArrayName(cloud.radii.empty() ? "" : kRadiusArray);
   mapper->SetScalarVisibility(!cloud.albedo.empty());
   actor->SetMapper(mapper);
   set_material(m);

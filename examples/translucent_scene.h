@@ -21,7 +21,9 @@
 
 namespace sss::cli {
 
-// Points, normals and (when the cloud has albedo) 8-bit colours.
+// Points, normals, per-point radii (when the cloud has them, as kRadiusArray) and (when the
+// cloud has albedo) 8-bit colours.
+constexpr const char* kRadiusArray = "Radius";
 vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud);
 
 struct TranslucentScene {

@@ -12,9 +12,8 @@
 namespace sss
 {
 
-PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, double spacing_scale,
-  vtkUnsignedCharArray* colours,
-  const std::array<std::uint8_t, 4>& fallback)
+PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
+  vtkUnsignedCharArray* colours, const std::array<std::uint8_t, 4>& fallback)
 {
   PreparedSurfels prepared;
   if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0)
@@ -30,9 +29,22 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, double spacin
     return prepared;
   }
   const vtkIdType n = input->GetNumberOfPoints();
+  vtkDataArray* given = choice.radius_array.empty()
+    ? nullptr
+    : input->GetPointData()->GetArray(choice.radius_array.c_str());
+  if (!choice.radius_array.empty() && (!given || given->GetNumberOfComponents() != 1))
+  {
+    prepared.error = "the radius array \"" + choice.radius_array +
+      "\" is not a 1-component point-data array of the input";
+    return prepared;
+  }
   SurfelCloud& cloud = prepared.cloud;
   cloud.positions.resize(n);
   cloud.normals.resize(n);
+  if (given)
+  {
+    cloud.radii.resize(n);
+  }
   for (vtkIdType i = 0; i < n; ++i)
   {
     double p[3], q[3];
@@ -40,24 +52,41 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, double spacin
     normals->GetTuple(i, q);
     cloud.positions[i] = Eigen::Vector3d(p[0], p[1], p[2]);
     cloud.normals[i] = Eigen::Vector3d(q[0], q[1], q[2]);
+    if (given)
+    {
+      cloud.radii[i] = given->GetComponent(i, 0);
+    }
   }
   cloud.radius = 1.0;  // placeholder until the spacing of the kept points is known
-  prepared.report = cloud.validate();
+  try
+  {
+    prepared.report = cloud.validate();
+  }
+  catch (const std::invalid_argument& e)
+  {
+    prepared.error = e.what();
+    return prepared;
+  }
   if (cloud.empty())
   {
     prepared.error = "no point has a finite position and normal (" + prepared.report.summary() + ")";
     return prepared;
   }
-  if (radius > 0.0)
+  if (choice.radius > 0.0)
   {
-    cloud.radius = radius;
+    cloud.radius = choice.radius;
   }
   else
   {
-    const double spacing = cloud.mean_spacing();
-    const Bounds b = cloud.bounds();
-    const double extent = b.extent().norm();
-    cloud.radius = spacing > 0.0 ? spacing_scale * spacing : (extent > 0.0 ? 0.01 * extent : 1.0);
+    const SplatRadii radii =
+      choose_splat_radii(cloud, choice.mode, choice.coverage_target, choice.scale);
+    cloud.radius = radii.radius;
+    prepared.uncovered = radii.uncovered;
+    prepared.spacing_spread = radii.spacing_spread;
+    if (!given)
+    {
+      cloud.radii = radii.per_point;
+    }
   }
   const Bounds b = cloud.bounds();
   const Eigen::Vector3d c = b.center();

@@ -1,8 +1,10 @@
 // Prepared surfels: a vtkPolyData's points and normals as the core's validated SurfelCloud
-// (finite points, unit normals, one radius), shared by the surfel mapper and the pass.
+// (finite points, unit normals, the radius that closes the surface and, where the density
+// varies, one per point: splat_coverage.h), shared by the surfel mapper and the pass.
 #ifndef sssSurfelPreparation_h
 #define sssSurfelPreparation_h
 
+#include "splat_coverage.h"
 #include "surfel_cloud.h"
 
 #include <array>
@@ -22,14 +24,26 @@ struct PreparedSurfels
   CloudReport report;
   std::array<double, 3> centre{ { 0, 0, 0 } };  // bounds centre of the kept points
   std::vector<std::uint8_t> rgba;             // 4 per kept point
+  double uncovered = 0.0;                     // measured at the uniform radius (automatic)
+  double spacing_spread = 1.0;
   std::string error;                          // why nothing can be drawn, or empty
 };
 
-// radius <= 0 picks the mean nearest-neighbour spacing. colours (RGBA per input point) may be
-// null: then every point gets `fallback`.
-PreparedSurfels prepare_surfels(vtkPolyData* input, double radius, double spacing_scale,
-  vtkUnsignedCharArray* colours,
-  const std::array<std::uint8_t, 4>& fallback);
+// How the radius is found: `radius` > 0 is taken as it is; else choose_splat_radii with
+// `mode`, `coverage_target` and `scale`. A point-data array named `radius_array` (1 component,
+// scene units) gives each point its own radius in the view.
+struct RadiusChoice
+{
+  double radius = 0.0;
+  double scale = 1.0;
+  double coverage_target = kDefaultCoverageTarget;
+  SplatRadiusMode mode = SplatRadiusMode::Automatic;
+  std::string radius_array;
+};
+
+// colours (RGBA per input point) may be null: then every point gets `fallback`.
+PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
+  vtkUnsignedCharArray* colours, const std::array<std::uint8_t, 4>& fallback);
 
 }
 

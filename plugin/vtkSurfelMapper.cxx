@@ -1,7 +1,9 @@
 #include "vtkSurfelMapper.h"
 
+#include "sssGpuHelpers.h"
 #include "sssSurfelPreparation.h"
 #include "sss_surfel_fs.h"
+#include "sss_surfel_normalise_fs.h"
 #include "sss_surfel_gs.h"
 #include "sss_surfel_vs.h"
 
@@ -13,6 +15,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -22,6 +26,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
@@ -40,9 +45,31 @@ struct vtkSurfelMapper::Internals
   vtkNew<vtkOpenGLBufferObject> Positions;
   vtkNew<vtkOpenGLBufferObject> Normals;
   vtkNew<vtkOpenGLBufferObject> Colours;
+  vtkNew<vtkOpenGLBufferObject> Radii;
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
   vtkTimeStamp UploadTime;
   vtkShaderProgram* BoundProgram = nullptr;
+
+  // Blended splatting: the scene's depth with the splats' pushed back, and the weighted sums.
+  vtkNew<vtkOpenGLFramebufferObject> SplatBuffer;
+  vtkSmartPointer<vtkTextureObject> SplatDepth, WeightedColour, WeightedDepth;
+  int SplatDepthFormat = -1;
+  bool WarnedBlit = false;
+  std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
+
+  void ReleaseSplatBuffers(vtkWindow* window)
+  {
+    for (auto* t : { &this->SplatDepth, &this->WeightedColour, &this->WeightedDepth })
+    {
+      if (*t)
+      {
+        (*t)->ReleaseGraphicsResources(window);
+        *t = nullptr;
+      }
+    }
+    this->SplatBuffer->ReleaseGraphicsResources(window);
+    this->Normalise.reset();
+  }
 };
 
 vtkSurfelMapper::vtkSurfelMapper()
@@ -118,7 +145,15 @@ const sss::PreparedSurfels& vtkSurfelMapper::UpdateSurfels(vtkActor* act)
   }
   vtkUnsignedCharArray* colours =
     input && this->ScalarVisibility ? this->MapScalars(input, 1.0) : nullptr;
-  this->Impl->Prepared = sss::prepare_surfels(input, this->Radius, this->RadiusScale, colours, fallback);
+  sss::RadiusChoice choice;
+  choice.radius = this->Radius;
+  choice.scale = this->RadiusScale;
+  choice.coverage_target = this->CoverageTarget;
+  choice.mode = this->RadiusMode == PER_POINT
+    ? sss::SplatRadiusMode::PerPoint
+    : (this->RadiusMode == UNIFORM ? sss::SplatRadiusMode::Uniform : sss::SplatRadiusMode::Automatic);
+  choice.radius_array = this->RadiusArrayName;
+  this->Impl->Prepared = sss::prepare_surfels(input, choice, colours, fallback);
   this->Impl->PreparedTime.Modified();
   const sss::PreparedSurfels& p = this->Impl->Prepared;
   if (!p.error.empty())
@@ -147,6 +182,34 @@ double vtkSurfelMapper::GetEffectiveRadius()
   return this->Impl->Prepared.error.empty() ? this->Impl->Prepared.cloud.radius : 0.0;
 }
 
+bool vtkSurfelMapper::GetUsesPerPointRadii()
+{
+  return this->Impl->Prepared.error.empty() && !this->Impl->Prepared.cloud.radii.empty();
+}
+
+double vtkSurfelMapper::GetUncoveredFraction()
+{
+  return this->Impl->Prepared.error.empty() ? this->Impl->Prepared.uncovered : 0.0;
+}
+
+const char* vtkSurfelMapper::GetRadiusModeAsString()
+{
+  switch (this->RadiusMode)
+  {
+    case UNIFORM:
+      return "Uniform";
+    case PER_POINT:
+      return "PerPoint";
+    default:
+      return "Automatic";
+  }
+}
+
+const char* vtkSurfelMapper::GetSplattingAsString()
+{
+  return this->Splatting == DISCS ? "Discs" : "Blended";
+}
+
 vtkIdType vtkSurfelMapper::GetNumberOfSurfels()
 {
   return static_cast<vtkIdType>(this->Impl->Prepared.cloud.size());
@@ -173,9 +236,10 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   Internals& impl = *this->Impl;
   const std::size_t n = prepared.cloud.size();
 
+  const bool perPoint = !prepared.cloud.radii.empty();
   if (impl.UploadTime < impl.PreparedTime)
   {
-    std::vector<float> positions(3 * n), normals(3 * n);
+    std::vector<float> positions(3 * n), normals(3 * n), radii(perPoint ? n : 1, 0.0f);
     for (std::size_t i = 0; i < n; ++i)
     {
       for (int c = 0; c < 3; ++c)
@@ -184,45 +248,17 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
           static_cast<float>(prepared.cloud.positions[i][c] - prepared.centre[c]);
         normals[3 * i + c] = static_cast<float>(prepared.cloud.normals[i][c]);
       }
+      if (perPoint)
+      {
+        radii[i] = static_cast<float>(prepared.cloud.radii[i]);
+      }
     }
     impl.Positions->Upload(positions, vtkOpenGLBufferObject::ArrayBuffer);
     impl.Normals->Upload(normals, vtkOpenGLBufferObject::ArrayBuffer);
     impl.Colours->Upload(prepared.rgba, vtkOpenGLBufferObject::ArrayBuffer);
+    impl.Radii->Upload(radii, vtkOpenGLBufferObject::ArrayBuffer);
     impl.UploadTime.Modified();
     impl.BoundProgram = nullptr;
-  }
-
-  std::string vs = sss_surfel_vs, gs = sss_surfel_gs, fs = sss_surfel_fs;
-  const std::vector<vtkOpenGLRenderPass*> passes = RenderPassesOf(act);
-  for (vtkOpenGLRenderPass* pass : passes)
-  {
-    pass->PreReplaceShaderValues(vs, gs, fs, this, act);
-  }
-  for (vtkOpenGLRenderPass* pass : passes)
-  {
-    pass->PostReplaceShaderValues(vs, gs, fs, this, act);
-  }
-  RemoveHooks(vs);
-  vtkShaderProgram* program =
-    renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-  if (!program)
-  {
-    vtkErrorMacro(<< "the surfel shaders did not compile");
-    return;
-  }
-  impl.VAO->Bind();
-  if (impl.BoundProgram != program)
-  {
-    impl.VAO->ReleaseGraphicsResources();
-    impl.VAO->Bind();
-    impl.VAO->AddAttributeArray(program, impl.Positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
-    impl.VAO->AddAttributeArray(program, impl.Normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
-    if (program->IsAttributeUsed("colourMC"))
-    {
-      impl.VAO->AddAttributeArray(
-        program, impl.Colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
-    }
-    impl.BoundProgram = program;
   }
 
   // Matrices in double: the model is shifted to its bounds centre first, so georeferenced
@@ -242,30 +278,198 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   const Eigen::Matrix4f viewToClip =
     ToEigen(camera->GetProjectionTransformMatrix(aspect, -1, 1)).cast<float>();
   const double scale = std::cbrt(std::fabs(linear.determinant()));
+  const std::vector<vtkOpenGLRenderPass*> passes = RenderPassesOf(act);
 
-  program->SetUniformMatrix4x4("modelToView", const_cast<float*>(modelToView.data()));
-  program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normalToView.data()));
-  program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(viewToClip.data()));
-  program->SetUniformf("radiusVC", static_cast<float>(prepared.cloud.radius * scale));
-  program->SetUniformi("orthographic", camera->GetParallelProjection() ? 1 : 0);
-  vtkProperty* property = act->GetProperty();
-  const float look[3] = { static_cast<float>(property->GetAmbient()),
-    static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
-  program->SetUniform3f("ambientDiffuse", look);
-  for (vtkOpenGLRenderPass* pass : passes)
+  // One surfel draw: SPLAT_PASS 0 hard discs, 1 visibility, 2 accumulation (surfel_fs.glsl).
+  auto draw = [&](int splatPass) -> bool
   {
-    if (!pass->SetShaderParameters(program, this, act, impl.VAO))
+    std::string vs = sss_surfel_vs, gs = sss_surfel_gs, fs = sss_surfel_fs;
+    vtkShaderProgram::Substitute(
+      fs, "//SSS::Splat::Dec", "#define SPLAT_PASS " + std::to_string(splatPass), true);
+    for (vtkOpenGLRenderPass* pass : passes)
     {
-      vtkErrorMacro(<< "a render pass could not set its shader parameters");
-      return;
+      pass->PreReplaceShaderValues(vs, gs, fs, this, act);
     }
-  }
+    for (vtkOpenGLRenderPass* pass : passes)
+    {
+      pass->PostReplaceShaderValues(vs, gs, fs, this, act);
+    }
+    RemoveHooks(vs);
+    vtkShaderProgram* program =
+      renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    if (!program)
+    {
+      vtkErrorMacro(<< "the surfel shaders did not compile");
+      return false;
+    }
+    impl.VAO->Bind();
+    if (impl.BoundProgram != program)
+    {
+      impl.VAO->ReleaseGraphicsResources();
+      impl.VAO->Bind();
+      impl.VAO->AddAttributeArray(program, impl.Positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+      impl.VAO->AddAttributeArray(program, impl.Normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+      if (program->IsAttributeUsed("colourMC"))
+      {
+        impl.VAO->AddAttributeArray(
+          program, impl.Colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+      }
+      if (perPoint && program->IsAttributeUsed("radiusMC"))
+      {
+        impl.VAO->AddAttributeArray(program, impl.Radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
+      }
+      impl.BoundProgram = program;
+    }
+    program->SetUniformMatrix4x4("modelToView", const_cast<float*>(modelToView.data()));
+    program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normalToView.data()));
+    program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(viewToClip.data()));
+    program->SetUniformf("radiusVC", static_cast<float>(prepared.cloud.radius * scale));
+    program->SetUniformi("perPointRadius", perPoint ? 1 : 0);
+    program->SetUniformf("modelToViewScale", static_cast<float>(scale));
+    program->SetUniformf(
+      "blendDepthVC", static_cast<float>(this->BlendDepth * prepared.cloud.radius * scale));
+    program->SetUniformi("orthographic", camera->GetParallelProjection() ? 1 : 0);
+    vtkProperty* property = act->GetProperty();
+    const float look[3] = { static_cast<float>(property->GetAmbient()),
+      static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
+    program->SetUniform3f("ambientDiffuse", look);
+    for (vtkOpenGLRenderPass* pass : passes)
+    {
+      if (!pass->SetShaderParameters(program, this, act, impl.VAO))
+      {
+        vtkErrorMacro(<< "a render pass could not set its shader parameters");
+        impl.VAO->Release();
+        return false;
+      }
+    }
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
+    impl.VAO->Release();
+    return true;
+  };
 
   vtkOpenGLState* state = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
+  if (this->Splatting == DISCS)
+  {
+    state->vtkglDisable(GL_BLEND);
+    draw(0);
+    return;
+  }
+
+  // Blended splatting in three passes, in buffers of the viewport's size that start from the
+  // scene's depth, so that opaque actors drawn before hide the splats behind them.
+  GLint viewport[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  const int w = viewport[2], h = viewport[3];
+  if (w < 1 || h < 1)
+  {
+    return;
+  }
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  vtkOpenGLState::ScopedglColorMask colorMask(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+  vtkOpenGLState::ScopedglClearColor clearColor(state);
+  {
+    vtkOpenGLState::ScopedglViewport savedViewport(state);
+    state->PushFramebufferBindings();
+    GLint drawn = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawn);
+    state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(drawn));
+    // The splats' depth starts as a copy of the scene's, in its format (a depth blit needs
+    // equal formats).
+    GLint depthType = 0, depthBits = 0;
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+      GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &depthType);
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+    const int depthFormat = depthType == GL_FLOAT ? vtkTextureObject::Float32
+      : depthBits <= 16                           ? vtkTextureObject::Fixed16
+      : depthBits <= 24                           ? vtkTextureObject::Fixed24
+                                                  : vtkTextureObject::Fixed32;
+    if (!impl.SplatDepth || impl.SplatDepthFormat != depthFormat ||
+      impl.SplatDepth->GetWidth() != static_cast<unsigned int>(w) ||
+      impl.SplatDepth->GetHeight() != static_cast<unsigned int>(h))
+    {
+      impl.ReleaseSplatBuffers(renWin);
+      impl.SplatDepth = vtkSmartPointer<vtkTextureObject>::New();
+      impl.SplatDepth->SetContext(renWin);
+      impl.SplatDepth->SetMinificationFilter(vtkTextureObject::Nearest);
+      impl.SplatDepth->SetMagnificationFilter(vtkTextureObject::Nearest);
+      impl.SplatDepth->AllocateDepth(w, h, depthFormat);
+      impl.SplatDepthFormat = depthFormat;
+      impl.WeightedColour = sss::float_texture_2d(renWin, w, h);
+      impl.WeightedDepth = sss::float_texture_2d(renWin, w, h, 2);
+    }
+    impl.SplatBuffer->SetContext(renWin);
+    impl.SplatBuffer->Bind();
+    impl.SplatBuffer->AddColorAttachment(0, impl.WeightedColour);
+    impl.SplatBuffer->AddColorAttachment(1, impl.WeightedDepth);
+    impl.SplatBuffer->AddDepthAttachment(impl.SplatDepth);
+    impl.SplatBuffer->ActivateDrawBuffers(2);
+    state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(drawn));
+    while (glGetError() != GL_NO_ERROR)
+    {
+    }
+    glBlitFramebuffer(viewport[0], viewport[1], viewport[0] + w, viewport[1] + h, 0, 0, w, h,
+      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    if (glGetError() != GL_NO_ERROR)
+    {
+      impl.SplatBuffer->RemoveColorAttachments(2);
+      impl.SplatBuffer->RemoveDepthAttachment();
+      state->PopFramebufferBindings();
+      if (!impl.WarnedBlit)
+      {
+        vtkWarningMacro(<< "the scene's depth cannot be copied for blended splatting (a "
+                           "multisampled framebuffer?); drawing hard discs");
+        impl.WarnedBlit = true;
+      }
+      state->vtkglDisable(GL_BLEND);
+      draw(0);
+      return;
+    }
+    state->vtkglViewport(0, 0, w, h);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LEQUAL);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglDepthMask(GL_TRUE);
+    bool drawnAll = draw(1);  // visibility: the front surface, pushed back by BlendDepth radii
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    drawnAll = drawnAll && draw(2);  // accumulation of every disc within the offset
+    impl.SplatBuffer->RemoveColorAttachments(2);
+    impl.SplatBuffer->RemoveDepthAttachment();
+    state->PopFramebufferBindings();
+    if (!drawnAll)
+    {
+      return;
+    }
+  }
+  // Normalisation into the renderer's framebuffer, colour and depth.
+  vtkShaderProgram* normalise = sss::ready_quad(impl.Normalise, renWin, sss_surfel_normalise_fs);
+  if (!normalise)
+  {
+    vtkErrorMacro(<< "the splat normalisation shader did not compile");
+    return;
+  }
   state->vtkglDisable(GL_BLEND);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
-  impl.VAO->Release();
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  impl.WeightedColour->Activate();
+  impl.WeightedDepth->Activate();
+  normalise->SetUniformi("weightedColour", impl.WeightedColour->GetTextureUnit());
+  normalise->SetUniformi("weightedDepth", impl.WeightedDepth->GetTextureUnit());
+  impl.Normalise->Render();
+  impl.WeightedColour->Deactivate();
+  impl.WeightedDepth->Deactivate();
 }
 
 void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)
@@ -273,7 +477,9 @@ void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)
   this->Impl->Positions->ReleaseGraphicsResources();
   this->Impl->Normals->ReleaseGraphicsResources();
   this->Impl->Colours->ReleaseGraphicsResources();
+  this->Impl->Radii->ReleaseGraphicsResources();
   this->Impl->VAO->ReleaseGraphicsResources();
+  this->Impl->ReleaseSplatBuffers(window);
   this->Impl->UploadTime = vtkTimeStamp();
   this->Impl->BoundProgram = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
@@ -282,7 +488,12 @@ void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkSurfelMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Radius: " << this->Radius << " (0: RadiusScale x mean nearest-neighbour spacing)\n";
+  os << indent << "Radius: " << this->Radius << " (0: from coverage)\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
+  os << indent << "CoverageTarget: " << this->CoverageTarget << "\n";
+  os << indent << "RadiusMode: " << this->GetRadiusModeAsString() << "\n";
+  os << indent << "RadiusArrayName: " << this->RadiusArrayName << "\n";
+  os << indent << "Splatting: " << this->GetSplattingAsString() << "\n";
+  os << indent << "BlendDepth: " << this->BlendDepth << "\n";
   os << indent << "Surfels: " << this->Impl->Prepared.cloud.size() << "\n";
 }

@@ -1,10 +1,17 @@
 /**
  * @class vtkSurfelMapper
- * @brief Draws a vtkPolyData's points as oriented discs (surfels) of one radius.
+ * @brief Draws a vtkPolyData's points as oriented discs (surfels), blended into a closed surface.
  *
  * Each point with a finite position and normal becomes a disc in the plane its normal defines.
  * Discs are expanded on the GPU into quads that lie in that plane, so depth is exact and there
- * is no point-size limit at close zoom. On its own the mapper shades discs with a two-sided
+ * is no point-size limit at close zoom. The radius is chosen so that the discs close the
+ * surface (a measured coverage target, see SetCoverageTarget), one per point where the density
+ * varies. By default overlapping discs are blended (Botsch and Kobbelt's splatting): a
+ * visibility pass keeps the depth of the front surface, pushed back by a fraction of the
+ * radius; an accumulation pass adds every disc within that offset, weighted by a Gaussian of
+ * the distance to its centre; a normalisation pass divides by the weights and writes colour
+ * and depth, so opaque actors in the same renderer stay in front or behind as they should.
+ * SetSplattingToDiscs draws hard discs with a depth test instead. On its own the mapper shades discs with a two-sided
  * Lambert term under a headlight, using point colours (ScalarVisibility) or the actor's
  * colour. With a vtkTranslucentMaterial on the actor and a vtkSubsurfacePass in the renderer,
  * the pass supplies each surfel's radiance instead (it follows vtkOpenGLRenderPass's shader
@@ -39,25 +46,89 @@ public:
 
   ///@{
   /**
-   * Disc radius in scene units. 0 (the default) uses RadiusScale times the mean distance from
-   * a point to its nearest neighbour.
+   * Disc radius in scene units. 0 (the default) finds the radius that closes the surface:
+   * each point's cell (its Voronoi cell among its neighbours in its tangent plane) is measured,
+   * and the radius is the smallest that leaves at most CoverageTarget of the cells' area
+   * uncovered, times RadiusScale.
    */
   vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
   ///@}
 
   ///@{
-  /**
-   * The automatic radius over the mean point spacing (default 1.5). At 1 the discs of a
-   * uniformly sampled surface touch, but seen from the light at grazing angles they leave
-   * gaps through which the far side is lit, which is wrong and slows the pass down.
-   */
+  /** Multiplies the automatic radius (default 1). */
   vtkSetClampMacro(RadiusScale, double, 0.01, 100.0);
   vtkGetMacro(RadiusScale, double);
   ///@}
 
-  /** The radius in use (scene units) after the last update; 0 before the first. */
+  ///@{
+  /**
+   * The fraction of the surface the automatic radius may leave uncovered (default 1e-4). A
+   * random sampling needs about 3.4 mean spacings for it, a regular grid 0.6 to 0.7.
+   */
+  vtkSetClampMacro(CoverageTarget, double, 0.0, 0.5);
+  vtkGetMacro(CoverageTarget, double);
+  ///@}
+
+  enum RadiusModes
+  {
+    AUTOMATIC = 0,  // per point where the local spacing spreads (p90 / p10 above 1.6)
+    UNIFORM = 1,
+    PER_POINT = 2,
+  };
+  ///@{
+  /**
+   * Whether each point gets its own radius (its cell's farthest corner, plus 5 %) in the view.
+   * Light maps and cells always use the uniform radius, so that no light leaks through.
+   */
+  vtkSetClampMacro(RadiusMode, int, AUTOMATIC, PER_POINT);
+  vtkGetMacro(RadiusMode, int);
+  void SetRadiusModeToAutomatic() { this->SetRadiusMode(AUTOMATIC); }
+  void SetRadiusModeToUniform() { this->SetRadiusMode(UNIFORM); }
+  void SetRadiusModeToPerPoint() { this->SetRadiusMode(PER_POINT); }
+  const char* GetRadiusModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * A point-data array (one component, scene units) that gives each point its radius in the
+   * view; empty (the default) for none.
+   */
+  vtkSetStdStringFromCharMacro(RadiusArrayName);
+  vtkGetCharFromStdStringMacro(RadiusArrayName);
+  ///@}
+
+  enum SplattingModes
+  {
+    BLENDED = 0,
+    DISCS = 1,
+  };
+  ///@{
+  /** Blended splats (the default) or hard discs. */
+  vtkSetClampMacro(Splatting, int, BLENDED, DISCS);
+  vtkGetMacro(Splatting, int);
+  void SetSplattingToBlended() { this->SetSplatting(BLENDED); }
+  void SetSplattingToDiscs() { this->SetSplatting(DISCS); }
+  const char* GetSplattingAsString();
+  ///@}
+
+  ///@{
+  /**
+   * How far behind the front surface blended discs still count, in disc radii (default 0.5):
+   * enough for the overlapping discs of one surface, less than the gap to the next.
+   */
+  vtkSetClampMacro(BlendDepth, double, 0.0, 10.0);
+  vtkGetMacro(BlendDepth, double);
+  ///@}
+
+  /** The uniform radius in use (scene units) after the last update; 0 before the first. */
   double GetEffectiveRadius();
+
+  /** Whether the last update gave each point its own radius in the view. */
+  bool GetUsesPerPointRadii();
+
+  /** The measured uncovered fraction at the automatic uniform radius (0 when it was set). */
+  double GetUncoveredFraction();
 
   /** Surfels drawn: input points with a finite position and normal. */
   vtkIdType GetNumberOfSurfels();
@@ -83,7 +154,12 @@ protected:
   ~vtkSurfelMapper() override;
 
   double Radius = 0.0;
-  double RadiusScale = 1.5;
+  double RadiusScale = 1.0;
+  double CoverageTarget = 1e-4;
+  int RadiusMode = AUTOMATIC;
+  std::string RadiusArrayName;
+  int Splatting = BLENDED;
+  double BlendDepth = 0.5;
 
 private:
   vtkSurfelMapper(const vtkSurfelMapper&) = delete;

@@ -8,10 +8,10 @@ layout(triangle_strip, max_vertices = 4) out;
 in vec3 centreVC_gs[];
 in vec3 normalVC_gs[];
 flat in vec4 colour_gs[];
+in float radius_gs[];
 in float curvature_gs[];
 
 uniform mat4 viewToClip;
-uniform float radiusVC;  // disc radius in view units
 
 out vec2 discCoord;  // position on the disc, in radii
 out vec3 pointVC;    // the point on the disc, view coordinates
@@ -30,7 +30,7 @@ void main()
                                   vec2(1.0, 1.0));
   for (int i = 0; i < 4; ++i)
   {
-    vec3 p = centreVC_gs[0] + radiusVC * (corners[i].x * t1 + corners[i].y * t2);
+    vec3 p = centreVC_gs[0] + radius_gs[0] * (corners[i].x * t1 + corners[i].y * t2);
     gl_Position = viewToClip * vec4(p, 1.0);
     discCoord = corners[i];
     pointVC = p;
