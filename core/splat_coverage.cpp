@@ -87,8 +87,9 @@ class CellBuilder {
       clip_cell(out.polygon, 2.0 * far);
       reach = reach_of(out.polygon);
     }
-    // An open edge: the cell stays open beyond the nearest neighbours. Else it ends where
-    // they do (their convex hull): at the edge of a scan or of a hole in it, the surface does.
+    // An open edge, or a hole wider than the neighbourhood: the cell reaches past the
+    // nearest neighbours. Else it ends where they do (their convex hull): at the edge of a
+    // scan or of a hole in it, the surface does.
     if (reach >= far) {
       out.polygon.clear();
     } else {
@@ -285,15 +286,17 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
     // No closed cell (a line, a handful of points): 1.5 mean spacings, else 1 % of the extent.
     const double spacing = cloud.mean_spacing();
     const double extent = cloud.bounds().extent().norm();
-    out.radius = scale * (spacing > 0.0 ? 1.5 * spacing : (extent > 0.0 ? 0.01 * extent : 1.0));
+    out.radius = scale * (spacing > 0.0 ? kSpreadCloudSpacings * spacing : (extent > 0.0 ? 0.01 * extent : 1.0));
     return out;
   }
-  out.radius = scale * coverage.radius_for(coverage_target);
-  out.uncovered = coverage.uncovered(out.radius);
   if (per_point) {
     out.per_point = per_point_cover_radii(cloud);
     for (double& r : out.per_point) r *= scale;
+    out.radius = scale * kSpreadCloudSpacings * cloud.mean_spacing();
+  } else {
+    out.radius = scale * coverage.radius_for(coverage_target);
   }
+  out.uncovered = coverage.uncovered(out.radius);
   return out;
 }
 

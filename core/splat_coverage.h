@@ -40,9 +40,12 @@ SplatCoverage measure_splat_coverage(const SurfelCloud& cloud, std::size_t max_c
 // open edge take the median of their closed neighbours'.
 std::vector<double> per_point_cover_radii(const SurfelCloud& cloud);
 
-// The splat radii a cloud gets: the uniform radius that meets the coverage target (light maps
-// and cells use it, so that no light leaks through and every cell is whole), and where the
-// density varies, each surfel's own for the camera view.
+// The splat radii a cloud gets. Where the spacing is even: the uniform radius that meets the
+// coverage target, which light maps and cells use too, so that no light leaks through and
+// every cell is whole. Where it spreads: each surfel's own radius for the camera view, and
+// kSpreadCloudSpacings mean nearest-neighbour spacings for light maps and cells (one radius
+// large enough for the sparsest part would make the near field's table of the dense parts
+// grow with its square; per-point radii in the physics are not there yet).
 struct SplatRadii {
   double radius = 0.0;
   std::vector<double> per_point;  // empty: the view uses `radius` too
@@ -54,6 +57,7 @@ struct SplatRadii {
 // Automatic picks per-point radii when the spacing spread exceeds kPerPointSpread. `scale`
 // multiplies the radii found; a target in (0, 1) is the uncovered area fraction allowed.
 constexpr double kPerPointSpread = 1.6;
+constexpr double kSpreadCloudSpacings = 1.5;
 constexpr double kDefaultCoverageTarget = 1e-4;
 SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode,
                               double coverage_target = kDefaultCoverageTarget, double scale = 1.0);

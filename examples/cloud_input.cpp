@@ -13,9 +13,7 @@ LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples) {
   LoadOptions load;
   load.mesh_samples = mesh_samples;
   const auto points = loadPointCloud<pcl::PointXYZRGBNormal>(path, load);
-  SurfelOptions options;
-  options.radius_scale = 1.0;  // sss_render scales it (--radius-scale)
-  const Surfels surfels = makeSurfels(points, options);
+  const Surfels surfels = makeSurfels(points);
 
   vtkPolyData* polydata = surfels.polydata;
   vtkDataArray* normals = polydata->GetPointData()->GetNormals();
@@ -34,7 +32,7 @@ LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples) {
       cloud.albedo.push_back(Rgb{c[0] / 255.0, c[1] / 255.0, c[2] / 255.0});
     }
   }
-  cloud.radius = surfels.radius;
+  cloud.radius = surfels.spacing;
   cloud.validate();
   loaded.description = points.description + "\n" + surfels.summary();
   return loaded;

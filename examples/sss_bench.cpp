@@ -32,6 +32,7 @@
 #include "reference_cache.h"
 #include "render_window.h"
 #include "scan_io.h"
+#include "splat_coverage.h"
 #include "stopwatch.h"
 #include "translucent_scene.h"
 
@@ -483,7 +484,7 @@ std::vector<Cloud> clouds_of(const Options& o) {
     std::fprintf(stderr, "reading %s%s\n", scan.file.c_str(),
                  scan.samples ? (" (" + std::to_string(scan.samples) + " samples)").c_str() : "");
     sss::cli::LoadedCloud loaded = sss::cli::load_cloud(scan.file, scan.samples);
-    loaded.cloud.radius *= 1.5;  // as sss_render's default --radius-scale
+    sss::assign_splat_radii(loaded.cloud);  // sss_render's default radii
     std::string name = fs::path(scan.file).filename().string();
     if (scan.samples) name += " (" + std::to_string(loaded.cloud.size()) + " samples)";
     clouds.push_back({name, std::move(loaded.cloud), mm, scan.light, scan.view_dir, scan.up,

@@ -110,7 +110,6 @@ void render(const Options& o) {
   vtkSmartPointer<vtkPolyData> surfels = o.input.empty() ? sphere() : read_ply(o.input);
   vtkNew<vtkSurfelMapper> mapper;
   mapper->SetInputData(surfels);
-  mapper->SetRadiusScale(1.5);  // the default: 1.5 x the mean spacing closes grazing gaps
   mapper->ScalarVisibilityOff();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -14,6 +14,7 @@
 #include "reference_renderer.h"
 #include "scan_io.h"
 #include "sphere_cases.h"
+#include "splat_coverage.h"
 #include "stopwatch.h"
 
 namespace sss::test {
@@ -31,11 +32,11 @@ struct ScanCase {
 void PrintTo(const ScanCase& c, std::ostream* os) { *os << c.file << ", " << c.material; }
 
 // The cloud as sss_render loads it: PLY meshes by their vertices (disc radius from the edges),
-// point-cloud files through the PCL loader with sss_render's default --radius-scale 1.5.
+// point-cloud files through the PCL loader with sss_render's default radii (splat_coverage.h).
 SurfelCloud load_scan(const std::string& path) {
   const bool mesh = path.find(".ply") != std::string::npos;
   SurfelCloud cloud = mesh ? load_ply_mesh(path) : cli::load_cloud(path).cloud;
-  if (!mesh) cloud.radius *= 1.5;
+  if (!mesh) assign_splat_radii(cloud);
   cloud.validate();
   return cloud;
 }

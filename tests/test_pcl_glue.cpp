@@ -121,7 +121,7 @@ TEST_F(PclGlue, PcdInEveryEncodingGivesTheSameSurfelsForEveryPointType) {
       EXPECT_EQ(s->size(), cloud.size()) << name;
       EXPECT_TRUE(s->estimated_normals) << name;  // the file has none
       EXPECT_GT(worst_radial_alignment(s->polydata), 0.99) << name;
-      EXPECT_DOUBLE_EQ(s->radius, xyz.radius) << name;
+      EXPECT_DOUBLE_EQ(s->spacing, xyz.spacing) << name;
     }
     EXPECT_TRUE(rgb.has_colours);
     EXPECT_TRUE(both.has_colours);
@@ -171,19 +171,14 @@ TEST_F(PclGlue, OrganisedCloudKeepsItsShapeAndDropsItsHoles) {
     ASSERT_LT(normal(s.polydata, i).z(), -0.999);
 }
 
-TEST_F(PclGlue, RadiusComesFromTheSpacing) {
+TEST_F(PclGlue, SpacingIsTheMeanNearestNeighbourDistance) {
   pcl::PointCloud<pcl::PointXYZ> plane;
   const float h = 0.25f;
   for (int i = 0; i < 50; ++i)
     for (int j = 0; j < 50; ++j) plane.push_back(pcl::PointXYZ(h * i, h * j, 0.0f));
-  sss::SurfelOptions options;
-  options.radius_scale = 1.0;
-  const auto s = sss::makeSurfels(plane, options);
-  EXPECT_NEAR(s.spacing, h, 1e-6);
-  EXPECT_NEAR(s.radius, h, 1e-6);
-  EXPECT_NEAR(sss::makeSurfels(plane).radius, 1.5 * h, 1e-6);  // the default scale
+  EXPECT_NEAR(sss::makeSurfels(plane).spacing, h, 1e-6);
   plane.push_back(plane[0]);  // a duplicate does not make the spacing zero
-  EXPECT_NEAR(sss::makeSurfels(plane, options).spacing, h, 1e-6);
+  EXPECT_NEAR(sss::makeSurfels(plane).spacing, h, 1e-6);
 }
 
 TEST_F(PclGlue, ColoursBecomeTheAlbedoArray) {

@@ -59,7 +59,6 @@ std::vector<float> plain_vtk_radiance(const sss::Surfels& surfels, const Eigen::
   renderer->AddLight(light);
   vtkNew<vtkSurfelMapper> mapper;
   mapper->SetInputData(surfels.polydata);
-  mapper->SetRadius(surfels.radius);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   vtkNew<vtkTranslucentMaterial> marble;

@@ -59,10 +59,9 @@ def parse_arguments():
                                          "in the current folder)")
     parser.add_argument("--size", type=parse_size, default=(512, 512),
                         help="image size, N or WxH pixels (default 512)")
-    parser.add_argument("--radius-scale", type=float, default=1.5,
-                        help="disc radius over the mean point spacing (default 1.5: smaller "
-                             "discs leave gaps at grazing angles, and the lit far side shows "
-                             "through them)")
+    parser.add_argument("--radius-scale", type=float, default=1.0,
+                        help="multiplies the disc radius that closes the surface, which the "
+                             "mapper measures (default 1)")
     args = parser.parse_args()
     if not args.mm_per_unit > 0:
         parser.error("--mm-per-unit must be positive")

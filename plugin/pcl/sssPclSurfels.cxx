@@ -103,7 +103,6 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
   if (!(s.spacing > 0.0))
     throw InputError("all " + std::to_string(xyz->size()) +
                      " finite points lie at one place; there is no surface");
-  s.radius = s.spacing * options.radius_scale;
 
   std::vector<Eigen::Vector3f> normals(xyz->size());
   bool any_given = false;
@@ -187,8 +186,7 @@ std::size_t Surfels::size() const {
 
 std::string Surfels::summary() const {
   std::string text = std::to_string(size()) + " surfels of " + std::to_string(input_points) +
-                     " points, radius " + std::to_string(radius) + " (mean spacing " +
-                     std::to_string(spacing) + ")";
+                     " points, mean spacing " + std::to_string(spacing);
   text += estimated_normals ? ", normals estimated" : ", normals given";
   if (has_colours) text += ", colours as albedo";
   if (nonfinite_points) text += ", " + std::to_string(nonfinite_points) + " non-finite dropped";

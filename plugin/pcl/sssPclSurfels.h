@@ -1,6 +1,7 @@
 // A PCL cloud as surfels for vtkSurfelMapper: finite points, unit normals (kept, or estimated
-// with NormalEstimationOMP over a neighbourhood taken from the spacing), one radius from the
-// spacing found with PCL's kd-tree, and colours kept as per-point albedo.
+// with NormalEstimationOMP over a neighbourhood taken from the spacing found with PCL's
+// kd-tree), and colours kept as per-point albedo. The disc radius is the mapper's: the one
+// that closes the surface (vtkSurfelMapper::SetCoverageTarget).
 #pragma once
 
 #include <pcl/point_cloud.h>
@@ -31,9 +32,6 @@ struct SurfelOptions {
   double normal_radius = 0.0;
   double normal_radius_spacings = 3.0;
   int normal_neighbours = 16;
-  // Disc radius over the mean nearest-neighbour spacing: 1 leaves gaps between discs seen at
-  // grazing angles, through which the lit far side shows.
-  double radius_scale = 1.5;
 };
 
 struct Surfels {
@@ -41,7 +39,6 @@ struct Surfels {
   // (float, unit) and, when the cloud has colours, "Colors" (unsigned char RGB) as scalars.
   vtkSmartPointer<vtkPolyData> polydata;
   double spacing = 0.0;  // mean distance to the nearest other point, scene units
-  double radius = 0.0;   // spacing times radius_scale
   bool has_colours = false;
   bool estimated_normals = false;
   std::size_t input_points = 0;

@@ -80,7 +80,6 @@ TranslucentCloud::TranslucentCloud(pcl::visualization::PCLVisualizer& viewer, st
     renderers_(renderers_of(viewer, options.viewport)) {
   mapper_ = vtkSmartPointer<vtkSurfelMapper>::New();
   mapper_->SetInputData(surfels_.polydata);
-  mapper_->SetRadius(surfels_.radius);
   mapper_->SetScalarVisibility(surfels_.has_colours);
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper_);

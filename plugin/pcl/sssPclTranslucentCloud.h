@@ -108,7 +108,7 @@ class TranslucentCloud {
 };
 
 // Makes `cloud` translucent in `viewer` (no subclassing; the visualizer's own window and
-// renderers): builds surfels (normals kept or estimated, radius from the spacing, colours as
+// renderers): builds surfels (normals kept or estimated, radius from coverage, colours as
 // albedo), adds the actor and installs a vtkSubsurfacePass on the viewport's renderers.
 // Throws InputError for a cloud with nothing to show and std::invalid_argument for an unknown
 // material, a used id or a viewport the visualizer does not have. Instantiated for PointXYZ,
