@@ -64,7 +64,10 @@ options (default in brackets)
   --samples N          for given PLY meshes: N points sampled on the surface [0: vertices]
   --scale-mesh FILE    mesh the scale sweep samples [the shared dragon]
   --scale-points LIST  point counts of the scale sweep [100000,300000,1000000,2000000,5000000]
-  --scale-strategies L settings the scale sweep times (as in --settings) [paper,near-far]
+  --scale-strategies L settings the scale sweep times (as in --settings), or none; at each
+                       point count it also times the view alone (blended splats and hard
+                       discs, radiance given) [paper,near-far]
+  --scale-only         only the scale sweep
   --settings LIST      measure these settings instead of the sweep: comma-separated
                        strategy[:map[:angle[:samples]]] (strategy near-far or paper; largest
                        map side; far-field opening angle; cell samples), e.g.
@@ -82,6 +85,7 @@ options (default in brackets)
 struct Options {
   std::vector<std::string> clouds;
   bool quick = false;
+  bool scale_only = false;
   std::vector<std::string> materials{"marble", "skimmilk", "ketchup"};
   double mm_per_unit = 1.0;
   std::size_t samples = 0;
@@ -161,6 +165,10 @@ Options parse(int argc, char** argv) {
         o.scale_points.push_back(static_cast<std::size_t>(number(flag, n)));
     } else if (flag == "--scale-strategies") {
       o.scale_strategies = split(value());
+      if (o.scale_strategies == std::vector<std::string>{"none"}) o.scale_strategies.clear();
+      for (const std::string& text : o.scale_strategies) setting_of(text);
+    } else if (flag == "--scale-only") {
+      o.scale_only = true;
     } else if (flag == "--settings") {
       o.settings = split(value());
       for (const std::string& text : o.settings) setting_of(text);
@@ -389,6 +397,38 @@ void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
   }
 }
 
+// The view alone, light static: the radiance given (steps 1-2 skipped), drawn as blended
+// splats and as hard discs.
+void run_view(const Options& o, TranslucentScene& scene, const Cloud& cloud, double plain,
+              std::ostream& csv) {
+  vtkNew<vtkFloatArray> given;
+  given->SetNumberOfComponents(3);
+  given->SetNumberOfTuples(static_cast<vtkIdType>(cloud.surfels.size()));
+  given->Fill(0.5);
+  scene.pass->SetPrecomputedRadiance(scene.actor, given);
+  for (const bool blended : {true, false}) {
+    if (blended) {
+      scene.mapper->SetSplattingToBlended();
+    } else {
+      scene.mapper->SetSplattingToDiscs();
+    }
+    scene.window->Render();
+    Row row;
+    row.kind = "view";
+    row.cloud = cloud.name;
+    row.points = cloud.surfels.size();
+    row.strategy = blended ? "blended" : "discs";
+    row.plain_points_s = plain;
+    row.frame_static_s = sss::cli::time_light_static(scene, o.frames);
+    row.peak_rss_mb = peak_rss_mb();
+    std::fprintf(stderr, "  view, %s: %.4f s per frame (%.2fx plain VTK points)\n",
+                 row.strategy.c_str(), row.frame_static_s, row.frame_static_s / plain);
+    write_row(csv, row);
+  }
+  scene.mapper->SetSplattingToBlended();
+  scene.pass->SetPrecomputedRadiance(scene.actor, nullptr);
+}
+
 void run_scale(const Options& o, std::ostream& csv) {
   const bool procedural = o.scale_mesh.empty() && o.quick;
   const std::string mesh =
@@ -413,6 +453,7 @@ void run_scale(const Options& o, std::ostream& csv) {
       cloud.surfels = sss::cli::load_cloud(mesh, n).cloud;
       cloud.name = fs::path(mesh).filename().string();
     }
+    sss::assign_splat_radii(cloud.surfels);
     std::fprintf(stderr, "scale: %zu surfels (%.1f s to make)\n", cloud.surfels.size(), clock.lap());
     auto window = sss::cli::make_render_window("egl", o.size, o.size);
     TranslucentScene scene(window, cloud.surfels, material, {{kObjectLight, 1.0}});
@@ -420,6 +461,7 @@ void run_scale(const Options& o, std::ostream& csv) {
     scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
     scene.window->Render();
     const double plain = sss::cli::time_plain_points(scene, o.frames);
+    run_view(o, scene, cloud, plain, csv);
     for (const std::string& strategy : o.scale_strategies) {
       if (std::find(over_budget.begin(), over_budget.end(), strategy) != over_budget.end()) {
         std::fprintf(stderr, "  %-9s skipped (a smaller cloud took over %g s)\n", strategy.c_str(),
@@ -448,6 +490,7 @@ std::vector<Cloud> clouds_of(const Options& o) {
     Cloud torus{"torus", sss::make_torus(30.0, 7.0, kQuickSpacing), 1.0, kObjectLight,
                 kObjectView, kObjectUp, {}};
     torus.surfels.validate();
+    sss::assign_splat_radii(torus.surfels);
     clouds.push_back(std::move(torus));
     return clouds;
   }
@@ -509,7 +552,8 @@ int run(Options o) {
   if (!csv) throw std::runtime_error("cannot write " + csv_path.string());
   csv << kColumns << '\n';
   sss::Stopwatch clock;
-  for (const Cloud& cloud : clouds_of(o)) run_sweep(o, cloud, csv);
+  if (!o.scale_only)
+    for (const Cloud& cloud : clouds_of(o)) run_sweep(o, cloud, csv);
   run_scale(o, csv);
   csv.close();
   std::fprintf(stderr, "wrote %s (%.0f s)\n", csv_path.string().c_str(), clock.lap());

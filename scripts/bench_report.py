@@ -36,8 +36,9 @@ needs it):
   err8_mean       mean and max difference of 8-bit sRGB values (0-255)
   err8_max
   peak_rss_mb     peak resident memory of the process, MiB
-  kind            sweep (a setting of the trade-off) or scale (the default setting at
-                  another point count)
+  kind            sweep (a setting of the trade-off), scale (the default setting at
+                  another point count) or view (the view alone, light static, radiance
+                  given: strategy is the splatting, blended or discs)
 
 "Time ratio" is a frame time over plain_points_s. A sweep row is on the Pareto front when no
 other sweep row of the same cloud and material has both a time ratio (light moving) and a
@@ -66,7 +67,7 @@ COLUMNS = ("cloud", "points", "material", "strategy", "map_size", "opening_angle
            "cell_samples", "is_paper", "is_default", "bake_s", "light_s", "frame_static_s",
            "frame_moving_s", "plain_points_s", "near_field_mib", "virtual_points", "lit_cells",
            "err_mean", "err_p99", "err_max", "err8_mean", "err8_max", "peak_rss_mb", "kind")
-KINDS = ("sweep", "scale")
+KINDS = ("sweep", "scale", "view")
 
 MISSING = "-"
 STRATEGY_MARKERS = OrderedDict([("near-far", "o"), ("paper", "D")])
@@ -262,9 +263,19 @@ def scale_cells(row):
             _figures(row["near_field_mib"]), _figures(row["peak_rss_mb"]))
 
 
+VIEW_HEADER = ("points", "splatting", "light static", "/ plain", "plain points",
+               "peak RSS (MiB)")
+
+
+def view_cells(row):
+    return (_count(row["points"]), row["strategy"] or MISSING, _ms(row["frame_static_s"]),
+            _times(static_ratio(row)), _ms(row["plain_points_s"]), _figures(row["peak_rss_mb"]))
+
+
 def markdown(rows, source_name):
     sweep = [r for r in rows if r["kind"] == "sweep"]
     scale = [r for r in rows if r["kind"] == "scale"]
+    view = [r for r in rows if r["kind"] == "view"]
     front = front_lines(sweep)
     out = [f"# Speed against error: {source_name}", ""]
     out += ["Times in milliseconds at the benchmark's image size; `/ plain` is a frame time "
@@ -291,6 +302,13 @@ def markdown(rows, source_name):
         ordered = sorted(group, key=lambda r: (r["points"] is None, r["points"] or 0, r["line"]))
         out += _table(SCALE_HEADER, [scale_cells(r) for r in ordered])
         out.append("")
+    if view:
+        out += ["## View alone (light static, radiance given)", ""]
+        for (cloud,), group in group_by(view, "cloud").items():
+            out += [f"### {cloud}", ""]
+            ordered = sorted(group, key=lambda r: (r["points"] or 0, r["line"]))
+            out += _table(VIEW_HEADER, [view_cells(r) for r in ordered])
+            out.append("")
     return "\n".join(out)
 
 

@@ -163,6 +163,25 @@ class BenchReport(unittest.TestCase):
         with open(os.path.join(self.out, "bench.md"), encoding="utf-8") as f:
             self.assertIn("No scale rows.", f.read())
 
+    def test_view_rows_get_their_own_table(self):
+        view = []
+        for points, splatting, seconds in ((100000, "blended", 0.06), (100000, "discs", 0.03),
+                                           (1000000, "blended", 0.5)):
+            name, r = row(f"view_{points}_{splatting}", "dragon", "", splatting, "", "",
+                          points=points, kind="view")
+            r.update(frame_static_s=seconds, plain_points_s=0.05, bake_s="", light_s="",
+                     near_field_mib="", lit_cells="")
+            view.append((name, r))
+        write_csv(self.csv, ROWS + view)
+        result = self.run_script(self.csv, "--out-dir", self.out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(self.out, "bench.md"), encoding="utf-8") as f:
+            md = f.read()
+        table = section_rows(md, "### dragon")
+        self.assertEqual([(r[0], r[1], r[3]) for r in table],
+                         [("100,000", "blended", "1.2x"), ("100,000", "discs", "0.6x"),
+                          ("1,000,000", "blended", "10x")])
+
     def test_bad_input_is_named(self):
         write_csv(self.csv, ROWS, columns=[c for c in bench_report.COLUMNS if c != "err_p99"])
         result = self.run_script(self.csv, "--out-dir", self.out)
