@@ -286,6 +286,8 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     std::string vs = sss_surfel_vs, gs = sss_surfel_gs, fs = sss_surfel_fs;
     vtkShaderProgram::Substitute(
       fs, "//SSS::Splat::Dec", "#define SPLAT_PASS " + std::to_string(splatPass), true);
+    vtkShaderProgram::Substitute(
+      gs, "//SSS::Splat::Dec", splatPass == 1 ? "#define SPLAT_PUSH_BACK" : "", true);
     for (vtkOpenGLRenderPass* pass : passes)
     {
       pass->PreReplaceShaderValues(vs, gs, fs, this, act);

@@ -1,18 +1,12 @@
 //VTK::System::Dec
 // Camera view of a surfel: the disc's colour, computed per surfel in surfel_vs.glsl. SPLAT_PASS
 // (set by vtkSurfelMapper) picks the pass: 0 a hard disc; 1 the visibility pass of blended
-// splatting, the disc's depth pushed back along the view ray by blendDepthVC; 2 the
-// accumulation pass, colour and depth weighted by a Gaussian of the distance to the centre
+// splatting (the depth alone, pushed back by surfel_gs.glsl); 2 the accumulation pass, colour and depth weighted by a Gaussian of the distance to the centre
 // (surfel_normalise_fs.glsl divides by the weights).
 //SSS::Splat::Dec
 
 in vec2 discCoord;
-in vec3 pointVC;
 flat in vec4 colour;
-
-uniform mat4 viewToClip;
-uniform bool orthographic;
-uniform float blendDepthVC;
 
 //VTK::Output::Dec
 
@@ -24,10 +18,6 @@ void main()
     discard;
   }
 #if SPLAT_PASS == 1
-  vec3 back = orthographic ? pointVC - vec3(0.0, 0.0, blendDepthVC)
-                           : pointVC * (1.0 + blendDepthVC / length(pointVC));
-  vec4 clip = viewToClip * vec4(back, 1.0);
-  gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
   gl_FragData[0] = vec4(0.0);
 #elif SPLAT_PASS == 2
   float w = exp(-2.0 * r2);  // e^-2 at the rim

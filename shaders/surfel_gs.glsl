@@ -1,7 +1,9 @@
 //VTK::System::Dec
 // Expands each surfel into a quad in the plane of its disc: the quad's depth is the disc's
-// own, so depth testing is exact, and there is no point-size limit at close zoom.
+// own, so depth testing is exact, and there is no point-size limit at close zoom. With
+// SPLAT_PUSH_BACK (vtkSurfelMapper's visibility pass) the depth is pushed back.
 
+//SSS::Splat::Dec
 layout(points) in;
 layout(triangle_strip, max_vertices = 4) out;
 
@@ -12,6 +14,8 @@ in float radius_gs[];
 in float curvature_gs[];
 
 uniform mat4 viewToClip;
+uniform bool orthographic;
+uniform float blendDepthVC;  // SPLAT_PUSH_BACK: how far back along the view ray
 
 out vec2 discCoord;  // position on the disc, in radii
 out vec3 pointVC;    // the point on the disc, view coordinates
@@ -31,7 +35,14 @@ void main()
   for (int i = 0; i < 4; ++i)
   {
     vec3 p = centreVC_gs[0] + radius_gs[0] * (corners[i].x * t1 + corners[i].y * t2);
+#ifdef SPLAT_PUSH_BACK
+    // The visibility pass of blended splatting: the same footprint on screen (the corner moves
+    // along its view ray), the depth of a point blendDepthVC behind the disc.
+    vec3 back = orthographic ? p - vec3(0.0, 0.0, blendDepthVC) : p * (1.0 + blendDepthVC / length(p));
+    gl_Position = viewToClip * vec4(back, 1.0);
+#else
     gl_Position = viewToClip * vec4(p, 1.0);
+#endif
     discCoord = corners[i];
     pointVC = p;
     normalVC = n;
