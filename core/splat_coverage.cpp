@@ -280,8 +280,12 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
   SplatRadii out;
   const SplatCoverage coverage = measure_splat_coverage(cloud);
   out.spacing_spread = coverage.spacing_spread;
+  // Automatic: per point where the spacing spreads, or where a few cells far larger than the
+  // rest would set the uniform radius (a random sampling's tail has r(1e-4) / r(0.05) = 1.75).
+  const bool tail = coverage.measured > 0 &&
+                    coverage.radius_for(coverage_target) > kPerPointTail * coverage.radius_for(0.05);
   const bool per_point = mode == SplatRadiusMode::PerPoint ||
-                         (mode == SplatRadiusMode::Automatic && coverage.spacing_spread > kPerPointSpread);
+                         (mode == SplatRadiusMode::Automatic && (coverage.spacing_spread > kPerPointSpread || tail));
   if (coverage.measured == 0) {
     // No closed cell (a line, a handful of points): 1.5 mean spacings, else 1 % of the extent.
     const double spacing = cloud.mean_spacing();

@@ -42,7 +42,8 @@ std::vector<double> per_point_cover_radii(const SurfelCloud& cloud);
 
 // The splat radii a cloud gets. Where the spacing is even: the uniform radius that meets the
 // coverage target, which light maps and cells use too, so that no light leaks through and
-// every cell is whole. Where it spreads: each surfel's own radius for the camera view, and
+// every cell is whole. Where it spreads (or a few large cells would set the uniform radius,
+// as the vertices of a mesh with a sparse patch): each surfel's own radius for the view, and
 // kSpreadCloudSpacings mean nearest-neighbour spacings for light maps and cells (one radius
 // large enough for the sparsest part would make the near field's table of the dense parts
 // grow with its square; per-point radii in the physics are not there yet).
@@ -54,9 +55,11 @@ struct SplatRadii {
   bool per_point_chosen() const { return !per_point.empty(); }
 };
 
-// Automatic picks per-point radii when the spacing spread exceeds kPerPointSpread. `scale`
+// Automatic picks per-point radii when the spacing spread exceeds kPerPointSpread, or when the
+// uniform radius exceeds kPerPointTail times the one that leaves 5 % uncovered. `scale`
 // multiplies the radii found; a target in (0, 1) is the uncovered area fraction allowed.
 constexpr double kPerPointSpread = 1.6;
+constexpr double kPerPointTail = 2.5;
 constexpr double kSpreadCloudSpacings = 1.5;
 constexpr double kDefaultCoverageTarget = 1e-4;
 SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode,

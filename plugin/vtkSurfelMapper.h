@@ -72,7 +72,8 @@ public:
 
   enum RadiusModes
   {
-    AUTOMATIC = 0,  // per point where the local spacing spreads (p90 / p10 above 1.6)
+    AUTOMATIC = 0,  // per point where the local spacing spreads (p90 / p10 above 1.6) or a
+                    // few large cells would set the uniform radius (over 2.5x the one at 5 %)
     UNIFORM = 1,
     PER_POINT = 2,
   };
