@@ -94,4 +94,12 @@ TwoSamplings thirty_millimetre_spheres() {
   return two;
 }
 
+std::vector<Eigen::Vector3d> random_unit_sphere(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<Eigen::Vector3d> points(n);
+  for (Eigen::Vector3d& x : points) x = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+  return points;
+}
+
 }  // namespace sss::test

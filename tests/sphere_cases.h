@@ -18,6 +18,10 @@ std::vector<std::size_t> sample_of(const SurfelCloud& cloud, std::size_t count, 
                                    const Eigen::Vector3d& towards = Eigen::Vector3d::Zero(),
                                    double min_cos = -2.0);
 
+// `n` points drawn uniformly on the unit sphere with `seed`: a Poisson-like sampling without an
+// edge (unit normals equal the points).
+std::vector<Eigen::Vector3d> random_unit_sphere(std::size_t n, unsigned seed);
+
 // B on a surface far larger than the kernel, lit along `light`, at a point of normal n:
 // Ft(theta) cos(theta) R_total / pi (exact to l_d / R).
 Rgb local_closed_form(const Material& material, const Eigen::Vector3d& n,

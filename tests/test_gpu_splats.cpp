@@ -28,8 +28,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <vector>
+
+#include "sphere_cases.h"
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -61,11 +62,8 @@ vtkSmartPointer<vtkPolyData> to_polydata(const Cloud& c) {
 // Uniform random points on the unit sphere: the front half (z > 0, towards the camera) red,
 // the back half blue, so that a hole in the front shows blue.
 Cloud random_sphere(std::size_t n, unsigned seed, bool white = false) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> g(0.0, 1.0);
   Cloud c;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d x = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+  for (const Eigen::Vector3d& x : sss::test::random_unit_sphere(n, seed)) {
     c.points.push_back(x);
     c.normals.push_back(x);
     c.colours.push_back(white ? std::array<unsigned char, 3>{255, 255, 255}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "sphere_cases.h"
 #include "splat_coverage.h"
 #include "surfel_index.h"
 
@@ -22,16 +23,10 @@ SurfelCloud plane_cloud(const std::vector<Eigen::Vector3d>& points) {
   return cloud;
 }
 
-// Uniform random points on the unit sphere: a Poisson-like sampling without an edge.
 SurfelCloud poisson_sphere(std::size_t n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> g(0.0, 1.0);
   SurfelCloud cloud;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d x = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
-    cloud.positions.push_back(x);
-    cloud.normals.push_back(x);
-  }
+  cloud.positions = test::random_unit_sphere(n, seed);
+  cloud.normals = cloud.positions;
   cloud.radius = 1.0;
   cloud.validate();
   return cloud;
