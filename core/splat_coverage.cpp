@@ -286,21 +286,25 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
                     coverage.radius_for(coverage_target) > kPerPointTail * coverage.radius_for(0.05);
   const bool per_point = mode == SplatRadiusMode::PerPoint ||
                          (mode == SplatRadiusMode::Automatic && (coverage.spacing_spread > kPerPointSpread || tail));
+  const double spacing = cloud.mean_spacing();
   if (coverage.measured == 0) {
     // No closed cell (a line, a handful of points): 1.5 mean spacings, else 1 % of the extent.
-    const double spacing = cloud.mean_spacing();
     const double extent = cloud.bounds().extent().norm();
-    out.radius = scale * (spacing > 0.0 ? kSpreadCloudSpacings * spacing : (extent > 0.0 ? 0.01 * extent : 1.0));
+    out.radius = scale * (spacing > 0.0 ? kLightMapSpacings * spacing : (extent > 0.0 ? 0.01 * extent : 1.0));
+    out.view_radius = out.radius;
     return out;
   }
+  out.radius = scale * kLightMapSpacings * spacing;
+  out.uncovered = coverage.uncovered(out.radius);
   if (per_point) {
     out.per_point = per_point_cover_radii(cloud);
     for (double& r : out.per_point) r *= scale;
-    out.radius = scale * kSpreadCloudSpacings * cloud.mean_spacing();
+    out.view_radius = quantile(out.per_point, 0.5);
+    out.view_uncovered = 0.0;
   } else {
-    out.radius = scale * coverage.radius_for(coverage_target);
+    out.view_radius = scale * coverage.radius_for(coverage_target);
+    out.view_uncovered = coverage.uncovered(out.view_radius);
   }
-  out.uncovered = coverage.uncovered(out.radius);
   return out;
 }
 
@@ -308,7 +312,8 @@ SplatRadii assign_splat_radii(SurfelCloud& cloud, SplatRadiusMode mode, double c
                               double scale) {
   SplatRadii radii = choose_splat_radii(cloud, mode, coverage_target, scale);
   cloud.radius = radii.radius;
-  cloud.radii = radii.per_point;
+  cloud.radii = radii.per_point_chosen() ? radii.per_point
+                                         : std::vector<double>(cloud.size(), radii.view_radius);
   return radii;
 }
 

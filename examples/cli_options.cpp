@@ -140,9 +140,11 @@ std::string apply_splat_radii(const Options& o, SurfelCloud& cloud) {
                                                               : SplatRadiusMode::Automatic;
   const SplatRadii radii = assign_splat_radii(cloud, mode, o.coverage_target, o.radius_scale);
   std::ostringstream line;
-  line << "disc radius " << radii.radius << " (uncovered " << 100.0 * radii.uncovered
-       << " %), local spacing spread " << radii.spacing_spread
-       << (radii.per_point_chosen() ? ", one radius per point in the view" : "");
+  line << "view: " << (radii.per_point_chosen() ? "one disc radius per point, median " : "disc radius ")
+       << radii.view_radius;
+  if (!radii.per_point_chosen()) line << " (uncovered " << 100.0 * radii.view_uncovered << " %)";
+  line << "; light maps and cells: radius " << radii.radius << " (uncovered " << 100.0 * radii.uncovered
+       << " %); local spacing spread " << radii.spacing_spread;
   return line.str();
 }
 

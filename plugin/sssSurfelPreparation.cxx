@@ -6,6 +6,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -75,18 +76,26 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
   if (choice.radius > 0.0)
   {
     cloud.radius = choice.radius;
+    prepared.view_radius = choice.radius;
   }
   else
   {
     const SplatRadii radii =
       choose_splat_radii(cloud, choice.mode, choice.coverage_target, choice.scale);
     cloud.radius = radii.radius;
-    prepared.uncovered = radii.uncovered;
+    prepared.view_radius = radii.view_radius;
+    prepared.uncovered = radii.view_uncovered;
     prepared.spacing_spread = radii.spacing_spread;
     if (!given)
     {
       cloud.radii = radii.per_point;
     }
+  }
+  if (!cloud.radii.empty())
+  {
+    std::vector<double> sorted = cloud.radii;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    prepared.view_radius = sorted[sorted.size() / 2];
   }
   const Bounds b = cloud.bounds();
   const Eigen::Vector3d c = b.center();

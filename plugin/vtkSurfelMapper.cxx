@@ -179,6 +179,11 @@ vtkMTimeType vtkSurfelMapper::GetSurfelsTime() const
 
 double vtkSurfelMapper::GetEffectiveRadius()
 {
+  return this->Impl->Prepared.error.empty() ? this->Impl->Prepared.view_radius : 0.0;
+}
+
+double vtkSurfelMapper::GetLightMapRadius()
+{
   return this->Impl->Prepared.error.empty() ? this->Impl->Prepared.cloud.radius : 0.0;
 }
 
@@ -325,11 +330,11 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     program->SetUniformMatrix4x4("modelToView", const_cast<float*>(modelToView.data()));
     program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normalToView.data()));
     program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(viewToClip.data()));
-    program->SetUniformf("radiusVC", static_cast<float>(prepared.cloud.radius * scale));
+    program->SetUniformf("radiusVC", static_cast<float>(prepared.view_radius * scale));
     program->SetUniformi("perPointRadius", perPoint ? 1 : 0);
     program->SetUniformf("modelToViewScale", static_cast<float>(scale));
     program->SetUniformf(
-      "blendDepthVC", static_cast<float>(this->BlendDepth * prepared.cloud.radius * scale));
+      "blendDepthVC", static_cast<float>(this->BlendDepth * prepared.view_radius * scale));
     program->SetUniformi("orthographic", camera->GetParallelProjection() ? 1 : 0);
     vtkProperty* property = act->GetProperty();
     const float look[3] = { static_cast<float>(property->GetAmbient()),

@@ -46,10 +46,11 @@ public:
 
   ///@{
   /**
-   * Disc radius in scene units. 0 (the default) finds the radius that closes the surface:
-   * each point's cell (its Voronoi cell among its neighbours in its tangent plane) is measured,
-   * and the radius is the smallest that leaves at most CoverageTarget of the cells' area
-   * uncovered, times RadiusScale.
+   * Disc radius in scene units, for the view and the pass's light maps. 0 (the default) finds
+   * the view's radius that closes the surface: each point's cell (its Voronoi cell among its
+   * neighbours in its tangent plane) is measured, and the radius is the smallest that leaves
+   * at most CoverageTarget of the cells' area uncovered, times RadiusScale; light maps and
+   * cells then take 1.5 mean nearest-neighbour spacings (GetLightMapRadius).
    */
   vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
@@ -78,10 +79,7 @@ public:
     PER_POINT = 2,
   };
   ///@{
-  /**
-   * Whether each point gets its own radius (its cell's farthest corner, plus 5 %) in the view.
-   * Light maps and cells always use the uniform radius, so that no light leaks through.
-   */
+  /** Whether each point gets its own radius (its cell's farthest corner, plus 5 %) in the view. */
   vtkSetClampMacro(RadiusMode, int, AUTOMATIC, PER_POINT);
   vtkGetMacro(RadiusMode, int);
   void SetRadiusModeToAutomatic() { this->SetRadiusMode(AUTOMATIC); }
@@ -122,8 +120,17 @@ public:
   vtkGetMacro(BlendDepth, double);
   ///@}
 
-  /** The uniform radius in use (scene units) after the last update; 0 before the first. */
+  /**
+   * The view's radius (scene units) after the last update, the median with per-point radii;
+   * 0 before the first.
+   */
   double GetEffectiveRadius();
+
+  /**
+   * The radius of the discs in the pass's light maps and cells (scene units): Radius when set,
+   * else 1.5 mean nearest-neighbour spacings (times RadiusScale).
+   */
+  double GetLightMapRadius();
 
   /** Whether the last update gave each point its own radius in the view. */
   bool GetUsesPerPointRadii();

@@ -73,8 +73,9 @@ TEST(SplatCoverage, HexagonalLatticeIsCoveredAtItsCircumradius) {
   const SplatRadii radii = choose_splat_radii(plane_cloud(p), SplatRadiusMode::Automatic);
   EXPECT_FALSE(radii.per_point_chosen());
   // The target leaves the corners' last slivers open: just under the circumradius.
-  EXPECT_LE(radii.radius, a / std::sqrt(3.0));
-  EXPECT_GT(radii.radius, 0.99 * a / std::sqrt(3.0));
+  EXPECT_LE(radii.view_radius, a / std::sqrt(3.0));
+  EXPECT_GT(radii.view_radius, 0.99 * a / std::sqrt(3.0));
+  EXPECT_NEAR(radii.radius, kLightMapSpacings * a, 1e-9 * a);
 }
 
 TEST(SplatCoverage, PoissonSamplingMatchesItsVoidProbability) {
@@ -95,10 +96,10 @@ TEST(SplatCoverage, PoissonSamplingMatchesItsVoidProbability) {
   const double closed = std::sqrt(std::log(1.0 / kDefaultCoverageTarget) / (kPi * rho));
   std::printf("Poisson: radius %.4f for %.0e uncovered (closed form %.4f), %.2f mean spacings, "
               "spacing spread %.2f\n",
-              radii.radius, kDefaultCoverageTarget, closed, radii.radius / cloud.mean_spacing(),
+              radii.view_radius, kDefaultCoverageTarget, closed, radii.view_radius / cloud.mean_spacing(),
               radii.spacing_spread);
   EXPECT_FALSE(radii.per_point_chosen());
-  EXPECT_NEAR(radii.radius / closed, 1.0, 0.06);
+  EXPECT_NEAR(radii.view_radius / closed, 1.0, 0.06);
 }
 
 TEST(SplatCoverage, ScannerRingsGetPerPointRadiiThatCloseEveryCell) {
@@ -109,7 +110,7 @@ TEST(SplatCoverage, ScannerRingsGetPerPointRadiiThatCloseEveryCell) {
   std::printf("scanner rings: %zu points, spacing spread %.2f, uniform cover radius %.4f, light "
               "maps' %.4f\n",
               cloud.size(), radii.spacing_spread, uniform, radii.radius);
-  EXPECT_NEAR(radii.radius, kSpreadCloudSpacings * cloud.mean_spacing(), 1e-12);
+  EXPECT_NEAR(radii.radius, kLightMapSpacings * cloud.mean_spacing(), 1e-12);
   ASSERT_TRUE(radii.per_point_chosen());
   ASSERT_EQ(radii.per_point.size(), cloud.size());
   // Random points of the annulus between the first and last rings, away from its edges: each
