@@ -204,11 +204,11 @@ double SplatCoverage::radius_for(double target) const {
   return hi;
 }
 
-SplatCoverage measure_splat_coverage(const SurfelCloud& cloud, std::size_t max_cells) {
+namespace {
+SplatCoverage measure_with(const SurfelCloud& cloud, const SurfelIndex& index, std::size_t max_cells) {
   SplatCoverage out;
   const std::size_t n = cloud.size();
   if (n < 4) return out;
-  const SurfelIndex index(cloud.positions);
   const std::size_t measured = std::min(n, std::max<std::size_t>(max_cells, 1));
   std::vector<Cell> cells(measured);
   const long count = static_cast<long>(measured);
@@ -233,11 +233,10 @@ SplatCoverage measure_splat_coverage(const SurfelCloud& cloud, std::size_t max_c
   return out;
 }
 
-std::vector<double> per_point_cover_radii(const SurfelCloud& cloud) {
+std::vector<double> cover_radii_with(const SurfelCloud& cloud, const SurfelIndex& index) {
   const std::size_t n = cloud.size();
   std::vector<double> radii(n, 0.0);
   if (n < 4) return radii;
-  const SurfelIndex index(cloud.positions);
   const long count = static_cast<long>(n);
 #pragma omp parallel default(none) shared(cloud, index, radii, count)
   {
@@ -270,6 +269,36 @@ std::vector<double> per_point_cover_radii(const SurfelCloud& cloud) {
   return filled;
 }
 
+// Mean distance to the nearest other point (duplicates skipped), as SurfelCloud::mean_spacing.
+double mean_spacing_with(const SurfelCloud& cloud, const SurfelIndex& index) {
+  std::vector<std::size_t> near;
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (const Eigen::Vector3d& p : cloud.positions) {
+    index.nearest(p, 8, near);
+    for (std::size_t j : near) {
+      const double d = (cloud.positions[j] - p).norm();
+      if (d > 0.0) {
+        sum += d;
+        ++count;
+        break;
+      }
+    }
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+}  // namespace
+
+SplatCoverage measure_splat_coverage(const SurfelCloud& cloud, std::size_t max_cells) {
+  if (cloud.size() < 4) return {};
+  return measure_with(cloud, SurfelIndex(cloud.positions), max_cells);
+}
+
+std::vector<double> per_point_cover_radii(const SurfelCloud& cloud) {
+  if (cloud.size() < 4) return std::vector<double>(cloud.size(), 0.0);
+  return cover_radii_with(cloud, SurfelIndex(cloud.positions));
+}
+
 SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, double coverage_target,
                               double scale) {
   if (!(coverage_target >= 0.0 && coverage_target < 1.0))
@@ -278,7 +307,12 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
   if (!(scale > 0.0) || !std::isfinite(scale))
     throw std::invalid_argument("splat radius scale " + std::to_string(scale) + " is not positive");
   SplatRadii out;
-  const SplatCoverage coverage = measure_splat_coverage(cloud);
+  if (cloud.size() < 2) {
+    out.radius = out.view_radius = scale;  // nothing to measure: one scene unit
+    return out;
+  }
+  const SurfelIndex index(cloud.positions);  // one k-d tree for the coverage, radii and spacing
+  const SplatCoverage coverage = measure_with(cloud, index, 20000);
   out.spacing_spread = coverage.spacing_spread;
   // Automatic: per point where the spacing spreads, or where a few cells far larger than the
   // rest would set the uniform radius (a random sampling's tail has r(1e-4) / r(0.05) = 1.75).
@@ -286,7 +320,7 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
                     coverage.radius_for(coverage_target) > kPerPointTail * coverage.radius_for(0.05);
   const bool per_point = mode == SplatRadiusMode::PerPoint ||
                          (mode == SplatRadiusMode::Automatic && (coverage.spacing_spread > kPerPointSpread || tail));
-  const double spacing = cloud.mean_spacing();
+  const double spacing = mean_spacing_with(cloud, index);
   if (coverage.measured == 0) {
     // No closed cell (a line, a handful of points): 1.5 mean spacings, else 1 % of the extent.
     const double extent = cloud.bounds().extent().norm();
@@ -297,7 +331,7 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
   out.radius = scale * kLightMapSpacings * spacing;
   out.uncovered = coverage.uncovered(out.radius);
   if (per_point) {
-    out.per_point = per_point_cover_radii(cloud);
+    out.per_point = cover_radii_with(cloud, index);
     for (double& r : out.per_point) r *= scale;
     out.view_radius = quantile(out.per_point, 0.5);
     out.view_uncovered = 0.0;

@@ -46,9 +46,10 @@ struct vtkSurfelMapper::Internals
   vtkNew<vtkOpenGLBufferObject> Normals;
   vtkNew<vtkOpenGLBufferObject> Colours;
   vtkNew<vtkOpenGLBufferObject> Radii;
-  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  // One vertex array per SPLAT_PASS, so that passes do not rebind attributes every frame.
+  vtkNew<vtkOpenGLVertexArrayObject> VAO[3];
+  vtkShaderProgram* BoundProgram[3] = { nullptr, nullptr, nullptr };
   vtkTimeStamp UploadTime;
-  vtkShaderProgram* BoundProgram = nullptr;
 
   // Blended splatting: the scene's depth with the splats' pushed back, and the weighted sums.
   vtkNew<vtkOpenGLFramebufferObject> SplatBuffer;
@@ -263,7 +264,10 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     impl.Colours->Upload(prepared.rgba, vtkOpenGLBufferObject::ArrayBuffer);
     impl.Radii->Upload(radii, vtkOpenGLBufferObject::ArrayBuffer);
     impl.UploadTime.Modified();
-    impl.BoundProgram = nullptr;
+    for (auto& bound : impl.BoundProgram)
+    {
+      bound = nullptr;
+    }
   }
 
   // Matrices in double: the model is shifted to its bounds centre first, so georeferenced
@@ -309,23 +313,23 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       vtkErrorMacro(<< "the surfel shaders did not compile");
       return false;
     }
-    impl.VAO->Bind();
-    if (impl.BoundProgram != program)
+    vtkOpenGLVertexArrayObject* vao = impl.VAO[splatPass];
+    vao->Bind();
+    if (impl.BoundProgram[splatPass] != program)
     {
-      impl.VAO->ReleaseGraphicsResources();
-      impl.VAO->Bind();
-      impl.VAO->AddAttributeArray(program, impl.Positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
-      impl.VAO->AddAttributeArray(program, impl.Normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+      vao->ReleaseGraphicsResources();
+      vao->Bind();
+      vao->AddAttributeArray(program, impl.Positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+      vao->AddAttributeArray(program, impl.Normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
       if (program->IsAttributeUsed("colourMC"))
       {
-        impl.VAO->AddAttributeArray(
-          program, impl.Colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+        vao->AddAttributeArray(program, impl.Colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
       }
       if (perPoint && program->IsAttributeUsed("radiusMC"))
       {
-        impl.VAO->AddAttributeArray(program, impl.Radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
+        vao->AddAttributeArray(program, impl.Radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
       }
-      impl.BoundProgram = program;
+      impl.BoundProgram[splatPass] = program;
     }
     program->SetUniformMatrix4x4("modelToView", const_cast<float*>(modelToView.data()));
     program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normalToView.data()));
@@ -342,15 +346,15 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     program->SetUniform3f("ambientDiffuse", look);
     for (vtkOpenGLRenderPass* pass : passes)
     {
-      if (!pass->SetShaderParameters(program, this, act, impl.VAO))
+      if (!pass->SetShaderParameters(program, this, act, vao))
       {
         vtkErrorMacro(<< "a render pass could not set its shader parameters");
-        impl.VAO->Release();
+        vao->Release();
         return false;
       }
     }
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
-    impl.VAO->Release();
+    vao->Release();
     return true;
   };
 
@@ -485,10 +489,13 @@ void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)
   this->Impl->Normals->ReleaseGraphicsResources();
   this->Impl->Colours->ReleaseGraphicsResources();
   this->Impl->Radii->ReleaseGraphicsResources();
-  this->Impl->VAO->ReleaseGraphicsResources();
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Impl->VAO[k]->ReleaseGraphicsResources();
+    this->Impl->BoundProgram[k] = nullptr;
+  }
   this->Impl->ReleaseSplatBuffers(window);
   this->Impl->UploadTime = vtkTimeStamp();
-  this->Impl->BoundProgram = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
