@@ -29,10 +29,11 @@ LinearImage render_view(const SurfelCloud& cloud, const Material& material,
   if (!camera.up.allFinite())
     throw std::invalid_argument("[sss::render_view] up vector must be finite");
   const LocalSurfels surfels = LocalSurfels::from(cloud, material.mm_per_unit);
-  const OrthoView view = OrthoView::fit_image(surfels.positions, surfels.radius,
+  const OrthoView view = OrthoView::fit_image(surfels.positions, surfels.max_disc_radius(),
                                               camera.view_direction.normalized(), camera.up,
                                               camera.width, camera.height);
-  const DiscHits hits = rasterize_discs(view, surfels.positions, surfels.normals, surfels.radius);
+  const DiscHits hits = rasterize_discs(view, surfels.positions, surfels.normals, surfels.radius,
+                                        surfels.disc_radii);
   const std::vector<Rgb> Lo = outgoing_radiance(cloud, material, B, view.w);
   LinearImage image(camera.width, camera.height);
   for (std::size_t k = 0; k < hits.surfel.size(); ++k) {

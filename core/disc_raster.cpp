@@ -80,20 +80,22 @@ OrthoView OrthoView::fit_image(const std::vector<Eigen::Vector3d>& points, doubl
 }
 
 DiscHits rasterize_discs(const OrthoView& view, const std::vector<Eigen::Vector3d>& positions,
-                         const std::vector<Eigen::Vector3d>& normals, double radius) {
+                         const std::vector<Eigen::Vector3d>& normals, double radius,
+                         const std::vector<double>& radii) {
   const std::size_t pixels = static_cast<std::size_t>(view.width) * view.height;
   DiscHits hits;
   hits.surfel.assign(pixels, -1);
   hits.depth.assign(pixels, -std::numeric_limits<double>::infinity());
-  const double r2 = radius * radius;
   for (std::size_t s = 0; s < positions.size(); ++s) {
+    const double r = radii.empty() ? radius : radii[s];
+    const double r2 = r * r;
     const Eigen::Vector3d& p = positions[s];
     const Eigen::Vector3d& n = normals[s];
     const double nw = n.dot(view.w);
     if (std::fabs(nw) < 1e-6) continue;
     // The disc's outline on the image plane is an ellipse inside this box.
-    const double half_u = radius * std::sqrt(std::max(0.0, 1.0 - n.dot(view.u) * n.dot(view.u)));
-    const double half_v = radius * std::sqrt(std::max(0.0, 1.0 - n.dot(view.v) * n.dot(view.v)));
+    const double half_u = r * std::sqrt(std::max(0.0, 1.0 - n.dot(view.u) * n.dot(view.u)));
+    const double half_v = r * std::sqrt(std::max(0.0, 1.0 - n.dot(view.v) * n.dot(view.v)));
     const double pu = p.dot(view.u) - view.corner.x();
     const double pv = p.dot(view.v) - view.corner.y();
     const int i0 = std::max(0, static_cast<int>(std::floor((pu - half_u) / view.pixel)));

@@ -41,9 +41,11 @@ struct DiscHits {
   }
 };
 
-// Discs nearly edge-on (|n.w| < 1e-6) cover no pixel.
+// Discs nearly edge-on (|n.w| < 1e-6) cover no pixel. Each disc has its own radius in `radii`
+// when that is not empty, else `radius`.
 DiscHits rasterize_discs(const OrthoView& view, const std::vector<Eigen::Vector3d>& positions,
-                         const std::vector<Eigen::Vector3d>& normals, double radius);
+                         const std::vector<Eigen::Vector3d>& normals, double radius,
+                         const std::vector<double>& radii = {});
 
 // A unit vector perpendicular to w, as close to `up` as possible.
 Eigen::Vector3d perpendicular_up(const Eigen::Vector3d& w, const Eigen::Vector3d& up);

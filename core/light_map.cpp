@@ -36,12 +36,13 @@ LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<Direc
   for (const DirectionalLight& light : lights) {
     light.validate();
     const Eigen::Vector3d l = light.direction.normalized();
-    const OrthoView map = OrthoView::fit_pixel(surfels.positions, surfels.radius, l,
+    const OrthoView map = OrthoView::fit_pixel(surfels.positions, surfels.max_disc_radius(), l,
                                                Eigen::Vector3d::UnitZ(), texel,
                                                settings.max_map_size);
     out.maps.push_back(map);
     out.lights.push_back({l, light.irradiance});
-    out.hits.push_back(rasterize_discs(map, surfels.positions, surfels.normals, surfels.radius));
+    out.hits.push_back(rasterize_discs(map, surfels.positions, surfels.normals, surfels.radius,
+                                       surfels.disc_radii));
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include "surface_fit.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace sss {
@@ -19,12 +20,20 @@ LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
   local.normals = cloud.normals;
   local.albedo = cloud.albedo;
   local.radius = cloud.radius * mm_per_unit;
+  local.disc_radii.reserve(cloud.radii.size());
+  for (double r : cloud.radii) local.disc_radii.push_back(r * mm_per_unit);
   if (with_surface_fit) {
     SurfaceFit fit = fit_local_surfaces(local.positions, local.normals);
     local.curvature = std::move(fit.curvature);
     local.roughness = std::move(fit.roughness);
   }
   return local;
+}
+
+double LocalSurfels::max_disc_radius() const {
+  double r = radius;
+  for (double d : disc_radii) r = std::max(r, d);
+  return r;
 }
 
 }  // namespace sss

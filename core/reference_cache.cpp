@@ -158,6 +158,7 @@ ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material
   h.add_all(cloud.normals);
   h.add_all(cloud.albedo);
   h.add(cloud.radius);
+  h.add_all(cloud.radii);
   h.add(material.sigma_a);
   h.add(material.sigma_s_prime);
   h.add(material.eta);

@@ -16,11 +16,11 @@
 namespace sss {
 
 // Raise when the file layout or what render_reference computes changes: old files then miss.
-constexpr std::uint32_t kReferenceCacheVersion = 7;
+constexpr std::uint32_t kReferenceCacheVersion = 8;
 
 // What identifies one reference result.
 struct ReferenceKey {
-  // FNV-1a over the cloud (positions, normals, albedo, radius), the material (sigma_a,
+  // FNV-1a over the cloud (positions, normals, albedo, radius, radii), the material (sigma_a,
   // sigma_s', eta, mm per unit), the lights in order (direction, irradiance), every field of
   // ReferenceSettings that changes the result (light map, samples, tree and
   // the receivers asked for), and kReferenceCacheVersion.

@@ -246,7 +246,6 @@ struct SurfelPipeline::Gpu
     SetFloat3Array(program, "lightDirection", towards);
     SetFloat3Array(program, "lightIrradiance", irradiance);
     program->SetUniformi("mapSurfel", maps.surfel->GetTextureUnit());
-    program->SetUniformf("discRadius", static_cast<float>(radius));
     program->SetUniformf("kappaLimitCell", static_cast<float>(1.0 / radius));
   }
 
@@ -407,6 +406,7 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
     shape[4 * t + 3] = static_cast<float>(local.curvature[i]);
     cell[4 * t] = static_cast<float>(std::sqrt(area[i] / M_PI));
     cell[4 * t + 1] = static_cast<float>(area[i]);
+    cell[4 * t + 2] = static_cast<float>(local.disc_radius(i));
     rows[4 * t] = static_cast<float>(weights.first[i]);
     rows[4 * t + 1] = static_cast<float>(weights.first[i + 1] - weights.first[i]);
     at[2 * i] = static_cast<float>(t % g.width);

@@ -188,7 +188,7 @@ struct TranslucentActorState::Gpu
   LocalSurfels local;
   std::unique_ptr<Dipole> dipole;
 
-  vtkNew<vtkOpenGLBufferObject> points, normals, colours, curvatures;
+  vtkNew<vtkOpenGLBufferObject> points, normals, colours, curvatures, disc_radii;
   vtkNew<vtkOpenGLBufferObject> no_texel;  // the resolve's texel attribute for the paper: unused
   ProgramVAO illumination_vao, resolve_vao, grid_vao;
 
@@ -243,6 +243,7 @@ struct TranslucentActorState::Gpu
     normals->ReleaseGraphicsResources();
     colours->ReleaseGraphicsResources();
     curvatures->ReleaseGraphicsResources();
+    disc_radii->ReleaseGraphicsResources();
     no_texel->ReleaseGraphicsResources();
     grid_index->ReleaseGraphicsResources();
     for (ProgramVAO* v : { &illumination_vao, &resolve_vao, &grid_vao })
@@ -377,7 +378,8 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
   const std::size_t n = g.local.size();
   // Each disc's curvature lifts the light's texels onto its local surface (clamped at one
   // over the disc radius, as core/light_map.cpp does).
-  std::vector<float> points(3 * n), normals(3 * n), curvatures(n);
+  // Each disc's radius in the light's view, the one that closes the surface (mm).
+  std::vector<float> points(3 * n), normals(3 * n), curvatures(n), disc_radii(n);
   const double lift_limit = 1.0 / g.local.radius;
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -387,11 +389,13 @@ bool TranslucentActorState::upload_geometry(vtkOpenGLRenderWindow* window,
       normals[3 * i + c] = static_cast<float>(g.local.normals[i][c]);
     }
     curvatures[i] = static_cast<float>(std::clamp(g.local.curvature[i], -lift_limit, lift_limit));
+    disc_radii[i] = static_cast<float>(g.local.disc_radius(i));
   }
   g.points->Upload(points, vtkOpenGLBufferObject::ArrayBuffer);
   g.normals->Upload(normals, vtkOpenGLBufferObject::ArrayBuffer);
   g.colours->Upload(surfels.rgba, vtkOpenGLBufferObject::ArrayBuffer);
   g.curvatures->Upload(curvatures, vtkOpenGLBufferObject::ArrayBuffer);
+  g.disc_radii->Upload(disc_radii, vtkOpenGLBufferObject::ArrayBuffer);
   g.illumination_vao.program = nullptr;
   g.resolve_vao.program = nullptr;
 
@@ -514,7 +518,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   int atlas_w = 0, atlas_h = 1;
   for (const GpuLight& light : lights)
   {
-    const OrthoView map = OrthoView::fit_pixel(g.local.positions, g.local.radius,
+    const OrthoView map = OrthoView::fit_pixel(g.local.positions, g.local.max_disc_radius(),
       light.towards_light, Eigen::Vector3d::UnitZ(), texel, max_size);
     g.map_x.push_back(atlas_w);
     atlas_w += map.width;
@@ -632,6 +636,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     pv.vao->Bind();
     pv.vao->AddAttributeArray(program, g.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
     pv.vao->AddAttributeArray(program, g.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+    pv.vao->AddAttributeArray(program, g.disc_radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
     if (paper)
     {
       pv.vao->AddAttributeArray(program, g.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
@@ -652,7 +657,7 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
   program->SetUniform3f("eta", eta);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
-  const double reach = 0.5 * g.local.bounds.extent().norm() + g.local.radius + 1.0;
+  const double reach = 0.5 * g.local.bounds.extent().norm() + g.local.max_disc_radius() + 1.0;
   for (std::size_t l = 0; l < lights.size(); ++l)
   {
     const OrthoView& map = g.maps[l];
@@ -676,7 +681,8 @@ bool TranslucentActorState::run_illumination(vtkOpenGLRenderWindow* window,
     program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normal_to_view.data()));
     program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view_to_clip.data()));
     program->SetUniformMatrix3x3("viewToLocal", const_cast<float*>(view_to_local.data()));
-    program->SetUniformf("radiusVC", static_cast<float>(g.local.radius));
+    program->SetUniformi("perPointRadius", 1);
+    program->SetUniformf("modelToViewScale", 1.0f);
     program->SetUniformi("orthographic", 1);
     const float towards[3] = { static_cast<float>(lights[l].towards_light.x()),
       static_cast<float>(lights[l].towards_light.y()),

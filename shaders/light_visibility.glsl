@@ -3,7 +3,6 @@
 // surfel_list.glsl.
 
 uniform sampler2D mapSurfel;   // xy: the seen surfel's texel in the surfel list, x < 0: none
-uniform float discRadius;      // mm, every surfel's
 uniform float kappaLimitCell;  // 1/mm: the curvature clamp of a surfel's paraboloid (1 / radius)
 
 // Whether the light reaches point y of a surface with cosine cosI to the light and surface
@@ -36,7 +35,7 @@ bool lightReaches(int light, vec3 y, float cosI, float thickness)
   cosSeen = cosSeen < 0.0 ? min(cosSeen, -1e-4) : max(cosSeen, 1e-4);
   vec3 d = centre + (dot(p - centre, n) / cosSeen) * l - p;
   // The texel's centre lies on the disc; only rounding can put d past its radius.
-  d *= min(1.0, discRadius / max(length(d), 1e-30));
+  d *= min(1.0, texelFetch(surfelCell, s, 0).z / max(length(d), 1e-30));
   float kappa = clamp(shape.w, -kappaLimitCell, kappaLimitCell);
   vec3 seenPoint = p + d - 0.5 * kappa * dot(d, d) * n;
   vec3 seenNormal = normalize(n + kappa * d);
