@@ -45,8 +45,11 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
   std::vector<Row> rows(n);
   const double r = surfels.radius;
   const double kappa_limit = 1.0 / reach;
-  // Cells of surfels within the reach extend up to two disc radii beyond it.
-  const RadialKernel kernel(dipole, reach + 2.0 * r, kappa_limit);
+  // Cells of surfels within the reach extend beyond it by their farthest corner (about a disc
+  // radius; more where a sparse spot's cell reaches to the disc that closes the surface).
+  double cell_reach = 2.0 * r;
+  for (const Eigen::Vector2d& v : cells.outline) cell_reach = std::max(cell_reach, v.norm());
+  const RadialKernel kernel(dipole, reach + cell_reach, kappa_limit);
   const long count = static_cast<long>(n);
 #pragma omp parallel default(none) shared(surfels, cells, index, dipole, receivers, rows, count, \
                                           r, reach, kappa_limit, kernel)

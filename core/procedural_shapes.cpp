@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 namespace sss {
@@ -33,6 +34,26 @@ SurfelCloud make_slab(double disc_radius, double spacing) {
         cloud.normals.emplace_back(0.0, 0.0, 1.0);
       }
   cloud.radius = 0.75 * spacing;
+  cloud.validate();
+  return cloud;
+}
+
+SurfelCloud make_random_slab(double disc_radius, double spacing, unsigned seed) {
+  check(disc_radius, "disc radius");
+  check(spacing, "spacing");
+  // A Poisson process of density lambda has mean nearest-neighbour distance 1 / (2 sqrt(lambda)).
+  const double density = 0.25 / (spacing * spacing);
+  const auto count = static_cast<std::size_t>(std::llround(density * kPi * disc_radius * disc_radius));
+  SurfelCloud cloud;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> along(-disc_radius, disc_radius);
+  while (cloud.size() < count) {
+    const Eigen::Vector3d p(along(rng), along(rng), 0.0);
+    if (p.squaredNorm() > disc_radius * disc_radius) continue;
+    cloud.positions.push_back(p);
+    cloud.normals.emplace_back(0.0, 0.0, 1.0);
+  }
+  cloud.radius = 1.5 * spacing;
   cloud.validate();
   return cloud;
 }

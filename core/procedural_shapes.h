@@ -9,6 +9,11 @@ namespace sss {
 // z = 0, normals +z, disc radius 0.75 spacing (covers the plane). mm or any unit.
 SurfelCloud make_slab(double disc_radius, double spacing);
 
+// Points uniformly at random over the same disc (a Poisson sampling, as a mesh sampled at
+// random), mean nearest-neighbour distance `spacing` (density 1 / (4 spacing^2)), normals +z,
+// disc radius 1.5 spacings; `seed` picks the sampling.
+SurfelCloud make_random_slab(double disc_radius, double spacing, unsigned seed);
+
 // A torus around the z axis (ring radius R, tube radius r), sampled in rings about `spacing`
 // apart so that the density is even, normals outward.
 SurfelCloud make_torus(double R, double r, double spacing);

@@ -324,12 +324,11 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
   if (coverage.measured == 0) {
     // No closed cell (a line, a handful of points): 1.5 mean spacings, else 1 % of the extent.
     const double extent = cloud.bounds().extent().norm();
-    out.radius = scale * (spacing > 0.0 ? kLightMapSpacings * spacing : (extent > 0.0 ? 0.01 * extent : 1.0));
+    out.radius = scale * (spacing > 0.0 ? kCellSpacings * spacing : (extent > 0.0 ? 0.01 * extent : 1.0));
     out.view_radius = out.radius;
     return out;
   }
-  out.radius = scale * kLightMapSpacings * spacing;
-  out.uncovered = coverage.uncovered(out.radius);
+  out.radius = scale * kCellSpacings * spacing;
   if (per_point) {
     out.per_point = cover_radii_with(cloud, index);
     for (double& r : out.per_point) r *= scale;

@@ -42,17 +42,16 @@ std::vector<double> per_point_cover_radii(const SurfelCloud& cloud);
 
 // The splat radii a cloud gets. The view: where the spacing is even, the uniform radius that
 // meets the coverage target; where it spreads (or a few large cells would set that radius, as
-// the vertices of a mesh with a sparse patch), each surfel's own. Light maps and cells keep
-// kLightMapSpacings mean nearest-neighbour spacings: a radius that closes the surface there
-// too would leave no light leaking through and every cell whole, but measured on the dragon
-// sampled to 640,826 points (3.4 spacings) it grew the near table 5x and put the GPU path 1 %
-// off the reference (p99 19 %); that step is not taken yet.
+// the vertices of a mesh with a sparse patch), each surfel's own. The light maps draw the same
+// discs (no light leaks through gaps) and each cell reaches to its disc (the whole area its
+// surfel stands for). The cells' radius, which scales the light maps' texels and the near
+// field's reach, keeps kCellSpacings mean nearest-neighbour spacings: measured on the dragon
+// sampled to 640,826 points, the coverage radius (3.4 spacings) there grew the near table 5x.
 struct SplatRadii {
-  double radius = 0.0;            // light maps and cells
+  double radius = 0.0;            // the cells' (texels, near reach)
   double view_radius = 0.0;       // the view's (with per-point radii, their median)
   std::vector<double> per_point;  // empty: the view uses view_radius everywhere
-  double uncovered = 0.0;         // measured uncovered fraction at `radius`
-  double view_uncovered = 0.0;    // and at view_radius (0 with per-point radii)
+  double view_uncovered = 0.0;    // measured uncovered fraction at view_radius (0 per point)
   double spacing_spread = 1.0;
   bool per_point_chosen() const { return !per_point.empty(); }
 };
@@ -62,12 +61,12 @@ struct SplatRadii {
 // multiplies the radii found; a target in (0, 1) is the uncovered area fraction allowed.
 constexpr double kPerPointSpread = 1.6;
 constexpr double kPerPointTail = 2.5;
-constexpr double kLightMapSpacings = 1.5;
+constexpr double kCellSpacings = 1.5;
 constexpr double kDefaultCoverageTarget = 1e-4;
 SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode,
                               double coverage_target = kDefaultCoverageTarget, double scale = 1.0);
 
-// Sets cloud.radius (light maps and cells) and cloud.radii (the view's, one per surfel) from
+// Sets cloud.radius (the cells') and cloud.radii (the discs', one per surfel) from
 // choose_splat_radii and returns what it found.
 SplatRadii assign_splat_radii(SurfelCloud& cloud, SplatRadiusMode mode = SplatRadiusMode::Automatic,
                               double coverage_target = kDefaultCoverageTarget, double scale = 1.0);

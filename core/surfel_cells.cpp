@@ -33,37 +33,45 @@ SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index) 
       Eigen::Vector3d t1, t2;
       tangent_frame(surfels.normals[i], t1, t2);
       const double thickness = surface_thickness(surfels.roughness[i], surfels.curvature[i], r);
-      index.within(p, 2.0 * r, near);
-      neighbours.clear();
       Polygon& cell = cells[i];
-      disc_polygon(Eigen::Vector2d::Zero(), r, cell);
-      bool owned = true;
-      for (std::size_t j : near) {
-        if (j == static_cast<std::size_t>(i) || !on_same_surface(surfels, i, j, thickness)) continue;
-        const Eigen::Vector3d d = surfels.positions[j] - p;
-        const Eigen::Vector2d q(d.dot(t1), d.dot(t2));
-        if (q.squaredNorm() == 0.0) {
-          if (j < static_cast<std::size_t>(i)) owned = false;  // a duplicate: the lower index owns
-          continue;
+      disc_polygon(Eigen::Vector2d::Zero(), std::max(r, surfels.disc_radius(i)), cell);
+      // Neighbours within 2r first; a cell that still reaches past r (a sparse spot of a random
+      // sampling) asks again out to twice its reach, for the bisectors beyond r.
+      double searched = 0.0;
+      double reach2 = r * r;
+      while (!cell.empty() && 4.0 * reach2 > searched * searched) {
+        const double inner = searched;
+        searched = std::max(2.0 * r, 2.0 * std::sqrt(reach2) * (1.0 + 1e-9));
+        index.within(p, searched, near);
+        neighbours.clear();
+        bool owned = true;
+        for (std::size_t j : near) {
+          if (j == static_cast<std::size_t>(i) || !on_same_surface(surfels, i, j, thickness)) continue;
+          const Eigen::Vector3d d = surfels.positions[j] - p;
+          const Eigen::Vector2d q(d.dot(t1), d.dot(t2));
+          if (q.squaredNorm() == 0.0) {
+            if (j < static_cast<std::size_t>(i)) owned = false;  // a duplicate: the lower index owns
+            continue;
+          }
+          if (d.norm() >= inner) neighbours.emplace_back(q.squaredNorm(), q);
         }
-        neighbours.emplace_back(q.squaredNorm(), q);
-      }
-      if (!owned) {
-        cell.clear();
-        continue;
-      }
-      // Nearest neighbours first: once a bisector lies beyond the polygon's farthest corner,
-      // every later one does too.
-      std::sort(neighbours.begin(), neighbours.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-      double reach2 = 0.0;
-      for (const Eigen::Vector2d& v : cell) reach2 = std::max(reach2, v.squaredNorm());
-      for (const auto& [gap2, q] : neighbours) {
-        if (0.25 * gap2 >= reach2) break;
-        clip_to_nearer(cell, Eigen::Vector2d::Zero(), q, scratch);
-        if (cell.empty()) break;
+        if (!owned) {
+          cell.clear();
+          break;
+        }
+        // Nearest neighbours first: once a bisector lies beyond the polygon's farthest corner,
+        // every later one does too.
+        std::sort(neighbours.begin(), neighbours.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
         reach2 = 0.0;
         for (const Eigen::Vector2d& v : cell) reach2 = std::max(reach2, v.squaredNorm());
+        for (const auto& [gap2, q] : neighbours) {
+          if (0.25 * gap2 >= reach2) break;
+          clip_to_nearer(cell, Eigen::Vector2d::Zero(), q, scratch);
+          if (cell.empty()) break;
+          reach2 = 0.0;
+          for (const Eigen::Vector2d& v : cell) reach2 = std::max(reach2, v.squaredNorm());
+        }
       }
     }
   }

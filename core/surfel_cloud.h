@@ -36,8 +36,8 @@ class SurfelCloud {
   std::vector<Eigen::Vector3d> positions;  // scene units
   std::vector<Eigen::Vector3d> normals;
   std::vector<Rgb> albedo;                 // empty, or one per point (each channel in [0, 1])
-  double radius = 0.0;                     // disc radius, scene units: light maps and cells use it
-  std::vector<double> radii;               // empty, or each disc's own radius in the camera view
+  double radius = 0.0;                     // the cells' radius, scene units (local_surfels.h)
+  std::vector<double> radii;               // empty (radius), or each disc's in the views
   std::vector<std::size_t> input_index;    // input position of each kept point
 
   std::size_t size() const { return positions.size(); }

@@ -143,8 +143,8 @@ std::string apply_splat_radii(const Options& o, SurfelCloud& cloud) {
   line << "view: " << (radii.per_point_chosen() ? "one disc radius per point, median " : "disc radius ")
        << radii.view_radius;
   if (!radii.per_point_chosen()) line << " (uncovered " << 100.0 * radii.view_uncovered << " %)";
-  line << "; light maps and cells: radius " << radii.radius << " (uncovered " << 100.0 * radii.uncovered
-       << " %); local spacing spread " << radii.spacing_spread;
+  line << " (light maps too); cells' radius " << radii.radius << "; local spacing spread "
+       << radii.spacing_spread;
   return line.str();
 }
 

@@ -91,11 +91,16 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
       cloud.radii = radii.per_point;
     }
   }
-  if (!cloud.radii.empty())
+  prepared.per_point_radii = !cloud.radii.empty();
+  if (prepared.per_point_radii)
   {
     std::vector<double> sorted = cloud.radii;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
     prepared.view_radius = sorted[sorted.size() / 2];
+  }
+  else
+  {
+    cloud.radii.assign(cloud.size(), prepared.view_radius);  // the light maps' discs too
   }
   const Bounds b = cloud.bounds();
   const Eigen::Vector3d c = b.center();

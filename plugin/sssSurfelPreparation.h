@@ -1,7 +1,8 @@
 // Prepared surfels: a vtkPolyData's points and normals as the core's validated SurfelCloud
-// (finite points, unit normals, the light maps' radius in cloud.radius, and the view's: the
-// radius that closes the surface or, where the density varies, one per point in cloud.radii:
-// splat_coverage.h), shared by the surfel mapper and the pass.
+// (finite points, unit normals, the cells' radius in cloud.radius, and in cloud.radii each
+// disc's as the camera and the lights see it: the radius that closes the surface, one for all
+// or, where the density varies, one per point: splat_coverage.h), shared by the surfel mapper
+// and the pass.
 #ifndef sssSurfelPreparation_h
 #define sssSurfelPreparation_h
 
@@ -26,6 +27,7 @@ struct PreparedSurfels
   std::array<double, 3> centre{ { 0, 0, 0 } };  // bounds centre of the kept points
   std::vector<std::uint8_t> rgba;             // 4 per kept point
   double view_radius = 0.0;                   // the view's uniform radius, or the per-point median
+  bool per_point_radii = false;               // cloud.radii differ (else all are view_radius)
   double uncovered = 0.0;                     // measured at view_radius (automatic, uniform)
   double spacing_spread = 1.0;
   std::string error;                          // why nothing can be drawn, or empty

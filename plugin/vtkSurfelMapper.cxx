@@ -183,14 +183,14 @@ double vtkSurfelMapper::GetEffectiveRadius()
   return this->Impl->Prepared.error.empty() ? this->Impl->Prepared.view_radius : 0.0;
 }
 
-double vtkSurfelMapper::GetLightMapRadius()
+double vtkSurfelMapper::GetCellRadius()
 {
   return this->Impl->Prepared.error.empty() ? this->Impl->Prepared.cloud.radius : 0.0;
 }
 
 bool vtkSurfelMapper::GetUsesPerPointRadii()
 {
-  return this->Impl->Prepared.error.empty() && !this->Impl->Prepared.cloud.radii.empty();
+  return this->Impl->Prepared.error.empty() && this->Impl->Prepared.per_point_radii;
 }
 
 double vtkSurfelMapper::GetUncoveredFraction()
@@ -242,7 +242,7 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   Internals& impl = *this->Impl;
   const std::size_t n = prepared.cloud.size();
 
-  const bool perPoint = !prepared.cloud.radii.empty();
+  const bool perPoint = prepared.per_point_radii;
   if (impl.UploadTime < impl.PreparedTime)
   {
     std::vector<float> positions(3 * n), normals(3 * n), radii(perPoint ? n : 1, 0.0f);

@@ -46,11 +46,12 @@ public:
 
   ///@{
   /**
-   * Disc radius in scene units, for the view and the pass's light maps. 0 (the default) finds
-   * the view's radius that closes the surface: each point's cell (its Voronoi cell among its
-   * neighbours in its tangent plane) is measured, and the radius is the smallest that leaves
-   * at most CoverageTarget of the cells' area uncovered, times RadiusScale; light maps and
-   * cells then take 1.5 mean nearest-neighbour spacings (GetLightMapRadius).
+   * Disc radius in scene units, for the view, the pass's light maps and its cells. 0 (the
+   * default) finds the radius that closes the surface: each point's cell (its Voronoi cell
+   * among its neighbours in its tangent plane) is measured, and the radius is the smallest
+   * that leaves at most CoverageTarget of the cells' area uncovered, times RadiusScale; the
+   * light maps draw the same discs and each cell reaches to its disc. The pass's scale (its
+   * texels and near field) then takes 1.5 mean nearest-neighbour spacings (GetCellRadius).
    */
   vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
@@ -127,10 +128,11 @@ public:
   double GetEffectiveRadius();
 
   /**
-   * The radius of the discs in the pass's light maps and cells (scene units): Radius when set,
-   * else 1.5 mean nearest-neighbour spacings (times RadiusScale).
+   * The radius that sets the pass's scale (scene units): light-map texels are TexelPerRadius
+   * of it, the near field reaches two of it, and every cell reaches at least to it. Radius
+   * when set, else 1.5 mean nearest-neighbour spacings (times RadiusScale).
    */
-  double GetLightMapRadius();
+  double GetCellRadius();
 
   /** Whether the last update gave each point its own radius in the view. */
   bool GetUsesPerPointRadii();

@@ -23,6 +23,12 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud, const Eigen::
   auto polydata = vtkSmartPointer<vtkPolyData>::New();
   polydata->SetPoints(points);
   polydata->GetPointData()->SetNormals(normals);
+  if (!cloud.radii.empty()) {  // each disc's own radius in the views, as sss_render passes it
+    vtkNew<vtkFloatArray> radii;
+    radii->SetName("Radius");
+    for (double r : cloud.radii) radii->InsertNextValue(static_cast<float>(r));
+    polydata->GetPointData()->AddArray(radii);
+  }
   if (!cloud.albedo.empty()) {  // albedo as 8-bit colours, the form scans carry it in
     vtkNew<vtkUnsignedCharArray> colours;
     colours->SetNumberOfComponents(3);
@@ -41,6 +47,7 @@ GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
   renderer->AutomaticLightCreationOff();
   mapper->SetInputData(to_polydata(cloud, shift));
   mapper->SetRadius(cloud.radius);
+  mapper->SetRadiusArrayName(cloud.radii.empty() ? "" : "Radius");
   mapper->SetScalarVisibility(!cloud.albedo.empty());
   actor->SetMapper(mapper);
   material->SetSigmaA(m.sigma_a[0], m.sigma_a[1], m.sigma_a[2]);

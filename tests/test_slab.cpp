@@ -9,6 +9,7 @@
 #include "fresnel.h"
 #include "procedural_shapes.h"
 #include "reference_renderer.h"
+#include "splat_coverage.h"
 
 namespace sss {
 namespace {
@@ -56,6 +57,58 @@ TEST_P(Slab, CentreMatchesClosedForm) {
 INSTANTIATE_TEST_SUITE_P(
     Spacings, Slab,
     ::testing::Combine(::testing::Values("marble", "skimmilk", "ketchup"),
+                       ::testing::Values(0.25, 1.0, 4.0, 20.0, 100.0)),
+    [](const auto& info) {
+      return std::string(std::get<0>(info.param)) + "_" +
+             std::to_string(static_cast<int>(100 * std::get<1>(info.param))) + "pct_z_r";
+    });
+
+// The same slab sampled at random (Poisson, as a mesh sampled at random), radii as the product
+// chooses them (splat_coverage.h): each cell is the whole area its surfel stands for, so the
+// mean over the receivers near the centre meets the closed form as the regular grid does
+// (1 %; with cells cut at 1.5 spacings, 17 % of the surface lay in no cell and B was 15 % low
+// at z_r / 4). Single receivers scatter by up to 5 % near one z_r (printed, not asserted: the
+// far field places each cell's light at its surfel, not at its cell's centroid; no bar is set
+// for it yet).
+class RandomSlab : public ::testing::TestWithParam<std::tuple<const char*, double>> {};
+
+TEST_P(RandomSlab, CentreMeetsClosedFormOnAverage) {
+  const char* name = std::get<0>(GetParam());
+  const Material material = Material::preset(name, 1.3);
+  const Dipole dipole(material);
+  const double z_r = std::max({dipole.channel[0].z_r, dipole.channel[1].z_r, dipole.channel[2].z_r});
+  const double spacing = std::get<1>(GetParam()) * z_r;
+  const double support = dipole.max_support_radius(1e-3);
+  // Receivers within `centre`; beyond them the kernel's reach and ten spacings of margin.
+  const double centre = std::max(0.3 * support, 4 * spacing);
+  SurfelCloud slab = make_random_slab(support + centre + 10 * spacing, spacing, 3);
+  assign_splat_radii(slab);
+  ReferenceSettings settings;
+  for (std::size_t i = 0; i < slab.size() && settings.receivers.size() < 24; ++i)
+    if (slab.positions[i].norm() < centre) settings.receivers.push_back(i);
+  ASSERT_GE(settings.receivers.size(), 8u);
+  const double E = 1.0;
+  const ReferenceSolver solver(slab, material, {{Eigen::Vector3d(0, 0, 1), E}}, settings);
+  for (int c = 0; c < 3; ++c) {
+    const double Ft0 = fresnel_transmittance(material.eta[c], 1.0);
+    const double expected = E * Ft0 * dipole.channel[c].total_diffuse_reflectance() / M_PI;
+    double sum = 0.0, worst = 0.0;
+    for (std::size_t k = 0; k < settings.receivers.size(); ++k) {
+      const double ratio = solver.B(k)[c] / expected;
+      sum += ratio;
+      worst = std::max(worst, std::fabs(ratio - 1.0));
+    }
+    const double mean = sum / settings.receivers.size();
+    EXPECT_NEAR(mean, 1.0, 0.01) << name << " channel " << c;
+    std::printf("[ random slab ] %-9s spacing %8.3f mm, %zu points, channel %d: B / closed form "
+                "%+.3f %% mean over %zu receivers, worst %.2f %%\n", name, spacing, slab.size(), c,
+                100 * (mean - 1), settings.receivers.size(), 100 * worst);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Spacings, RandomSlab,
+    ::testing::Combine(::testing::Values("marble", "ketchup"),
                        ::testing::Values(0.25, 1.0, 4.0, 20.0, 100.0)),
     [](const auto& info) {
       return std::string(std::get<0>(info.param)) + "_" +

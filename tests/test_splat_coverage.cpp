@@ -75,7 +75,7 @@ TEST(SplatCoverage, HexagonalLatticeIsCoveredAtItsCircumradius) {
   // The target leaves the corners' last slivers open: just under the circumradius.
   EXPECT_LE(radii.view_radius, a / std::sqrt(3.0));
   EXPECT_GT(radii.view_radius, 0.99 * a / std::sqrt(3.0));
-  EXPECT_NEAR(radii.radius, kLightMapSpacings * a, 1e-9 * a);
+  EXPECT_NEAR(radii.radius, kCellSpacings * a, 1e-9 * a);
 }
 
 TEST(SplatCoverage, PoissonSamplingMatchesItsVoidProbability) {
@@ -110,7 +110,7 @@ TEST(SplatCoverage, ScannerRingsGetPerPointRadiiThatCloseEveryCell) {
   std::printf("scanner rings: %zu points, spacing spread %.2f, uniform cover radius %.4f, light "
               "maps' %.4f\n",
               cloud.size(), radii.spacing_spread, uniform, radii.radius);
-  EXPECT_NEAR(radii.radius, kLightMapSpacings * cloud.mean_spacing(), 1e-12);
+  EXPECT_NEAR(radii.radius, kCellSpacings * cloud.mean_spacing(), 1e-12);
   ASSERT_TRUE(radii.per_point_chosen());
   ASSERT_EQ(radii.per_point.size(), cloud.size());
   // Random points of the annulus between the first and last rings, away from its edges: each
