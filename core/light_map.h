@@ -1,8 +1,9 @@
 // Step 1, the light's view: an illumination map rendered from each directional light over the
-// surfel discs with a depth test, each disc of the radius that closes the surface
-// (LocalSurfels::disc_radius), so that light does not leak through gaps between them. Each texel keeps the disc it sees and how far along the
-// light that disc is; the irradiance step (surfel_irradiance.h) asks it which points of a
-// surfel's cell the light reaches (self-shadowing comes for free).
+// surfel discs with a depth test, each disc of the radius that closes the surface, at least
+// the cells' (LocalSurfels::disc_radius), so that light does not leak through gaps between
+// them. Each texel keeps the disc it sees and how far along the light that disc is; the
+// irradiance step (surfel_irradiance.h) asks it which points of a surfel's cell the light
+// reaches (self-shadowing comes for free).
 #pragma once
 
 #include <Eigen/Core>

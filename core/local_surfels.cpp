@@ -21,7 +21,7 @@ LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
   local.albedo = cloud.albedo;
   local.radius = cloud.radius * mm_per_unit;
   local.disc_radii.reserve(cloud.radii.size());
-  for (double r : cloud.radii) local.disc_radii.push_back(r * mm_per_unit);
+  for (double r : cloud.radii) local.disc_radii.push_back(std::max(r, cloud.radius) * mm_per_unit);
   if (with_surface_fit) {
     SurfaceFit fit = fit_local_surfaces(local.positions, local.normals);
     local.curvature = std::move(fit.curvature);

@@ -16,8 +16,10 @@ struct LocalSurfels {
   std::vector<double> curvature;           // 1/mm (surface_fit.h); empty: flat discs
   std::vector<double> roughness;           // mm (surface_fit.h); empty with the curvature
   double radius = 0.0;                     // mm: the cells' (dA's) radius and the texel's scale
-  std::vector<double> disc_radii;          // mm: each disc as the light and the camera see it
-                                           // (empty: radius); it closes the surface (splat_coverage.h)
+  std::vector<double> disc_radii;          // mm: each disc as the light sees it (empty: radius):
+                                           // the radius that closes the surface (splat_coverage.h),
+                                           // at least `radius` (smaller flat discs open gaps where
+                                           // the surface turns away from the light)
   Bounds bounds;                           // of positions, mm
 
   // The cloud must have been validated (SurfelCloud::validate). The local surface fit costs a

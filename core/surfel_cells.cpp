@@ -34,7 +34,7 @@ SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index) 
       tangent_frame(surfels.normals[i], t1, t2);
       const double thickness = surface_thickness(surfels.roughness[i], surfels.curvature[i], r);
       Polygon& cell = cells[i];
-      disc_polygon(Eigen::Vector2d::Zero(), std::max(r, surfels.disc_radius(i)), cell);
+      disc_polygon(Eigen::Vector2d::Zero(), surfels.disc_radius(i), cell);
       // Neighbours within 2r first; a cell that still reaches past r (a sparse spot of a random
       // sampling) asks again out to twice its reach, for the bisectors beyond r.
       double searched = 0.0;
