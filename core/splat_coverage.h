@@ -43,10 +43,11 @@ std::vector<double> per_point_cover_radii(const SurfelCloud& cloud);
 // The splat radii a cloud gets. The view: where the spacing is even, the uniform radius that
 // meets the coverage target; where it spreads (or a few large cells would set that radius, as
 // the vertices of a mesh with a sparse patch), each surfel's own. The light maps draw the same
-// discs (no light leaks through gaps) and each cell reaches to its disc (the whole area its
-// surfel stands for). The cells' radius, which scales the light maps' texels and the near
-// field's reach, keeps kCellSpacings mean nearest-neighbour spacings: measured on the dragon
-// sampled to 640,826 points, the coverage radius (3.4 spacings) there grew the near table 5x.
+// discs, never under the cells' radius (no light leaks through gaps), and each cell reaches to
+// its disc (the whole area its surfel stands for). The cells' radius, which scales the light
+// maps' texels and the near field's reach, keeps kCellSpacings mean nearest-neighbour
+// spacings: measured on the dragon sampled to 640,826 points, the coverage radius (3.4
+// spacings) there grew the near table 5x.
 struct SplatRadii {
   double radius = 0.0;            // the cells' (texels, near reach)
   double view_radius = 0.0;       // the view's (with per-point radii, their median)

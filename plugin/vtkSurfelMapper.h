@@ -50,8 +50,9 @@ public:
    * default) finds the radius that closes the surface: each point's cell (its Voronoi cell
    * among its neighbours in its tangent plane) is measured, and the radius is the smallest
    * that leaves at most CoverageTarget of the cells' area uncovered, times RadiusScale; the
-   * light maps draw the same discs and each cell reaches to its disc. The pass's scale (its
-   * texels and near field) then takes 1.5 mean nearest-neighbour spacings (GetCellRadius).
+   * light maps draw the same discs (never under GetCellRadius) and each cell reaches to its
+   * disc. The pass's scale (its texels and near field) then takes 1.5 mean nearest-neighbour
+   * spacings (GetCellRadius).
    */
   vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
