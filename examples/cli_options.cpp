@@ -23,6 +23,22 @@ double number(const std::string& flag, const std::string& text) {
   return v;
 }
 
+std::size_t count(const std::string& flag, const std::string& text, double hi) {
+  const double v = number(flag, text);
+  if (v < 0 || v > hi || v != std::floor(v)) {
+    std::ostringstream msg;
+    msg << flag << ": needs a whole number from 0 to " << hi;
+    throw std::invalid_argument(msg.str());
+  }
+  return static_cast<std::size_t>(v);
+}
+
+std::size_t memory_cap(const std::string& flag, const std::string& text) {
+  const std::size_t mib = count(flag, text, 1e9);
+  if (mib == 0) throw std::invalid_argument(flag + ": needs at least 1 MiB");
+  return mib << 20;
+}
+
 namespace {
 
 std::vector<double> numbers(const std::string& flag, const std::string& text, std::size_t count) {
@@ -116,6 +132,9 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
                             or discs (hard discs)
   --samples N               for a PLY mesh: N points sampled uniformly on its surface instead
                             of its vertices, as pcl_mesh_sampling does (default 0: vertices)
+  --memory-cap MIB          largest memory a file or --samples may claim; a header that
+                            claims more, or more data than the file holds, is refused before
+                            anything is read (default: half the physical memory)
   --frames N                after the outputs, time N frames with the camera orbiting (light
                             static), N with the light moving, and N of plain VTK points
                             (vertex cells, point size 2) of the same cloud (default 0)
@@ -244,10 +263,9 @@ Options parse(int argc, char** argv) {
       if (o.splatting != "blended" && o.splatting != "discs")
         throw std::invalid_argument("--splatting: needs blended or discs, not '" + o.splatting + "'");
     } else if (flag == "--samples") {
-      const double n = number(flag, value());
-      if (n < 0 || n > 1e9 || n != std::floor(n))
-        throw std::invalid_argument("--samples: needs a whole number from 0 to 1e9");
-      o.mesh_samples = static_cast<std::size_t>(n);
+      o.mesh_samples = count(flag, value(), 1e9);
+    } else if (flag == "--memory-cap") {
+      o.memory_cap = memory_cap(flag, value());
     } else if (flag == "--frames") {
       const double n = number(flag, value());
       if (n < 0 || n > 100000 || n != std::floor(n))

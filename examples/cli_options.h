@@ -44,6 +44,7 @@ struct Options {
   std::string radius_mode = "automatic";  // automatic, uniform, per-point
   std::string splatting = "blended";      // blended, discs
   std::size_t mesh_samples = 0;
+  std::size_t memory_cap = 0;  // bytes a load may claim; 0: the loader's default
   bool help = false;
 };
 
@@ -59,6 +60,10 @@ std::string apply_splat_radii(const Options& o, SurfelCloud& cloud);
 
 // The value of a numeric flag; throws std::invalid_argument naming the flag otherwise.
 double number(const std::string& flag, const std::string& text);
+// A whole number from 0 to hi; throws std::invalid_argument naming the flag otherwise.
+std::size_t count(const std::string& flag, const std::string& text, double hi);
+// --memory-cap's value, MiB, in bytes.
+std::size_t memory_cap(const std::string& flag, const std::string& text);
 std::string usage();
 
 }  // namespace sss::cli

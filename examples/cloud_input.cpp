@@ -9,9 +9,10 @@
 
 namespace sss::cli {
 
-LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples) {
+LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples, std::size_t memory_cap) {
   LoadOptions load;
   load.mesh_samples = mesh_samples;
+  load.memory_cap = memory_cap;
   const auto points = loadPointCloud<pcl::PointXYZRGBNormal>(path, load);
   const Surfels surfels = makeSurfels(points);
 

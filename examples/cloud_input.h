@@ -14,9 +14,11 @@ struct LoadedCloud {
   std::string description;  // what was read and what was dropped
 };
 
-// mesh_samples > 0 samples that many points on a PLY mesh's surface. Throws sss::InputError
-// naming the file and what is wrong (unreadable, unknown extension, no points, no finite
-// points, too few points for normals).
-LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples = 0);
+// mesh_samples > 0 samples that many points on a PLY mesh's surface; memory_cap (bytes, 0:
+// the loader's default) bounds what the file may claim. Throws sss::InputError naming the
+// file and what is wrong (unreadable, unknown extension, a header that claims more than the
+// file holds or the cap allows, no points, no finite points, too few points for normals).
+LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples = 0,
+                       std::size_t memory_cap = 0);
 
 }  // namespace sss::cli

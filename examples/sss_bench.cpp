@@ -62,6 +62,7 @@ options (default in brackets)
   --materials LIST     comma-separated presets [marble,skimmilk,ketchup; skin1 on the tile]
   --mm-per-unit F      for given clouds [1]
   --samples N          for given PLY meshes: N points sampled on the surface [0: vertices]
+  --memory-cap MIB     largest memory a file or --samples may claim [half the physical memory]
   --scale-mesh FILE    mesh the scale sweep samples [the shared dragon]
   --scale-points LIST  point counts of the scale sweep [100000,300000,1000000,2000000,5000000]
   --scale-strategies L settings the scale sweep times (as in --settings), or none; at each
@@ -89,6 +90,7 @@ struct Options {
   std::vector<std::string> materials{"marble", "skimmilk", "ketchup"};
   double mm_per_unit = 1.0;
   std::size_t samples = 0;
+  std::size_t memory_cap = 0;  // 0: the loader's default
   std::string scale_mesh;
   std::vector<std::size_t> scale_points{100000, 300000, 1000000, 2000000, 5000000};
   std::vector<std::string> scale_strategies{"paper", "near-far"};
@@ -127,9 +129,20 @@ Setting setting_of(const std::string& text) {
   vtkNew<vtkSubsurfacePass> pass;
   if (!pass->SetKernelStrategyByName(s.strategy))
     throw std::invalid_argument("--settings: '" + s.strategy + "' is not near-far or paper");
-  if (f.size() > 1) s.max_map = static_cast<int>(number("--settings", f[1]));
-  if (f.size() > 2) s.opening_angle = number("--settings", f[2]);
-  if (f.size() > 3) s.cell_samples = static_cast<int>(number("--settings", f[3]));
+  if (f.size() > 4) throw std::invalid_argument("--settings: '" + text + "' has more than 4 parts");
+  if (f.size() > 1 && !f[1].empty()) {
+    s.max_map = static_cast<int>(sss::cli::count("--settings map", f[1], 16384));
+    if (s.max_map < 16) throw std::invalid_argument("--settings map: needs 16 to 16384 texels");
+  }
+  if (f.size() > 2 && !f[2].empty()) {
+    s.opening_angle = number("--settings angle", f[2]);
+    if (s.opening_angle < 0.05 || s.opening_angle > 2)
+      throw std::invalid_argument("--settings angle: needs 0.05 to 2");
+  }
+  if (f.size() > 3 && !f[3].empty()) {
+    s.cell_samples = static_cast<int>(sss::cli::count("--settings samples", f[3], 256));
+    if (s.cell_samples < 1) throw std::invalid_argument("--settings samples: needs 1 to 256");
+  }
   s.is_paper = s.strategy == "paper";
   vtkNew<vtkSubsurfacePass> defaults;
   s.is_default = !s.is_paper && (s.max_map == 0 || s.max_map == defaults->GetMaxMapSize()) &&
@@ -156,13 +169,15 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--mm-per-unit") {
       o.mm_per_unit = number(flag, value());
     } else if (flag == "--samples") {
-      o.samples = static_cast<std::size_t>(number(flag, value()));
+      o.samples = sss::cli::count(flag, value(), 1e9);
+    } else if (flag == "--memory-cap") {
+      o.memory_cap = sss::cli::memory_cap(flag, value());
     } else if (flag == "--scale-mesh") {
       o.scale_mesh = value();
     } else if (flag == "--scale-points") {
       o.scale_points.clear();
       for (const std::string& n : split(value()))
-        o.scale_points.push_back(static_cast<std::size_t>(number(flag, n)));
+        o.scale_points.push_back(sss::cli::count(flag, n, 1e9));
     } else if (flag == "--scale-strategies") {
       o.scale_strategies = split(value());
       if (o.scale_strategies == std::vector<std::string>{"none"}) o.scale_strategies.clear();
@@ -173,9 +188,9 @@ Options parse(int argc, char** argv) {
       o.settings = split(value());
       for (const std::string& text : o.settings) setting_of(text);
     } else if (flag == "--frames") {
-      o.frames = static_cast<int>(number(flag, value()));
+      o.frames = static_cast<int>(sss::cli::count(flag, value(), 100000));
     } else if (flag == "--size") {
-      o.size = static_cast<int>(number(flag, value()));
+      o.size = static_cast<int>(sss::cli::count(flag, value(), 16384));
     } else if (flag == "--max-bake-s") {
       o.max_bake_s = number(flag, value());
     } else if (flag == "--out") {
@@ -450,7 +465,7 @@ void run_scale(const Options& o, std::ostream& csv) {
       cloud.surfels.validate();
       cloud.name = "torus";
     } else {
-      cloud.surfels = sss::cli::load_cloud(mesh, n).cloud;
+      cloud.surfels = sss::cli::load_cloud(mesh, n, o.memory_cap).cloud;
       cloud.name = fs::path(mesh).filename().string();
     }
     sss::assign_splat_radii(cloud.surfels);
@@ -526,7 +541,7 @@ std::vector<Cloud> clouds_of(const Options& o) {
   for (const Scan& scan : scans) {
     std::fprintf(stderr, "reading %s%s\n", scan.file.c_str(),
                  scan.samples ? (" (" + std::to_string(scan.samples) + " samples)").c_str() : "");
-    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(scan.file, scan.samples);
+    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(scan.file, scan.samples, o.memory_cap);
     sss::assign_splat_radii(loaded.cloud);  // sss_render's default radii
     std::string name = fs::path(scan.file).filename().string();
     if (scan.samples) name += " (" + std::to_string(loaded.cloud.size()) + " samples)";

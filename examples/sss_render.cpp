@@ -134,7 +134,7 @@ int run(const Options& o) {
     cloud = sss::make_torus(30.0, 7.0, 0.6);  // mm; its 7 mm tube glows when lit from behind
     cloud.validate();
   } else {
-    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(o.input, o.mesh_samples);
+    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(o.input, o.mesh_samples, o.memory_cap);
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = std::move(loaded.cloud);
   }

@@ -38,6 +38,7 @@ options (default in brackets)
                        coarser and faster, accurate finer and slower; costs and errors of
                        each in docs/benchmark/bench.md) [balanced]
   --samples N          sample N points on a PLY mesh's surface instead of its vertices [0]
+  --memory-cap MIB     largest memory the file or --samples may claim [half the physical memory]
   --size WxH           window size in pixels [1024x768]
   --keys STRING        press these keys one per frame after the first (scripted demos)
   --frames N           quit after N frames (0: run until the window is closed) [0]
@@ -60,6 +61,7 @@ struct Options {
   double mm_per_unit = 1.0;
   sss::Quality quality = sss::Quality::Balanced;
   std::size_t samples = 0;
+  std::size_t memory_cap = 0;  // 0: the loader's default
   int width = 1024, height = 768;
   std::string keys;
   int frames = 0;
@@ -89,9 +91,9 @@ Options parse(int argc, char** argv) {
       else if (q == "accurate") o.quality = sss::Quality::Accurate;
       else throw std::invalid_argument("--quality: use interactive, balanced or accurate");
     } else if (flag == "--samples") {
-      const double n = sss::cli::number(flag, value());
-      if (n < 0 || n != std::floor(n)) throw std::invalid_argument("--samples: needs a count");
-      o.samples = static_cast<std::size_t>(n);
+      o.samples = sss::cli::count(flag, value(), 1e9);
+    } else if (flag == "--memory-cap") {
+      o.memory_cap = sss::cli::memory_cap(flag, value());
     } else if (flag == "--size") {
       const std::string s = value();
       if (std::sscanf(s.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 16 ||
@@ -100,7 +102,7 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--keys") {
       o.keys = value();
     } else if (flag == "--frames") {
-      o.frames = static_cast<int>(sss::cli::number(flag, value()));
+      o.frames = static_cast<int>(sss::cli::count(flag, value(), 1e6));
     } else if (flag == "--screenshot") {
       o.screenshot = value();
     } else if (!flag.empty() && flag[0] == '-') {
@@ -207,6 +209,7 @@ int run(const Options& o) {
     std::fprintf(stderr, "reading %s\n", o.input.c_str());
     sss::LoadOptions load;
     load.mesh_samples = o.samples;
+    load.memory_cap = o.memory_cap;
     const auto loaded = sss::loadPointCloud<pcl::PointXYZRGBNormal>(o.input, load);
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = sss::addTranslucentSurfels(pcl_viewer, sss::makeSurfels(loaded, settings.surfels),

@@ -278,11 +278,13 @@ TEST_F(PclGlue, BadInputGivesOneClearError) {
   pcl::io::savePCDFileBinary(file("cut.pcd"), sphere_cloud(1.0f, 30, 60));
   fs::resize_file(file("cut.pcd"), fs::file_size(file("cut.pcd")) / 2);
   expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("cut.pcd")); },
-                     "cut.pcd: not a readable PCD file");
+                     "cut.pcd: its header claims 1740 points of 16 bytes (binary), at least 27 KiB "
+                     "of data, but the file holds 14 KiB after its header");
   pcl::io::savePLYFileBinary(file("cut.ply"), sphere_cloud(1.0f, 30, 60));
   fs::resize_file(file("cut.ply"), fs::file_size(file("cut.ply")) / 2);
   expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("cut.ply")); },
-                     "cut.ply: not a readable PLY file");
+                     "cut.ply: its header claims 1740 vertices, 1 camera element "
+                     "(binary_little_endian), at least 26 KiB of data, but the file holds 12 KiB");
 
   pcl::PointCloud<pcl::PointXYZ> nan_cloud;
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -307,6 +309,125 @@ TEST_F(PclGlue, BadInputGivesOneClearError) {
 
   pcl::PointCloud<pcl::PointXYZ> one_place(20, 1, pcl::PointXYZ(1, 2, 3));
   expect_input_error([&] { sss::makeSurfels(one_place); }, "lie at one place");
+}
+
+// The text of a file, with `from` replaced by `to` once.
+void rewrite(const std::string& path, const std::string& from, const std::string& to) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+}
+
+void gzip(const std::string& from, const std::string& to) {
+  std::ifstream in(from, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  gzFile out = gzopen(to.c_str(), "wb");
+  gzwrite(out, text.data(), static_cast<unsigned>(text.size()));
+  gzclose(out);
+}
+
+// Headers that claim more than the file holds, or than the memory cap allows, are refused by
+// a message naming the file, the claim and the size, before PCL allocates for the claim.
+TEST_F(PclGlue, LyingHeadersAreRefusedBeforeAllocating) {
+  const pcl::PointCloud<pcl::PointXYZRGB> cloud = sphere_cloud(1.0f, 30, 60);  // 1740 points
+  struct Case {
+    std::string name, words;
+    sss::LoadOptions options;
+  };
+  std::vector<Case> cases;
+  auto add = [&](const std::string& name, const std::string& words, std::size_t cap = 0,
+                 std::size_t samples = 0) {
+    sss::LoadOptions options;
+    options.memory_cap = cap;
+    options.mesh_samples = samples;
+    cases.push_back({name, words, options});
+  };
+
+  pcl::io::savePCDFileASCII(file("version.pcd"), cloud);
+  rewrite(file("version.pcd"), "VERSION", "V@RSION");  // crashed PCL's reader
+  add("version.pcd", "header line 2, 'V@RSION 0.7', is not a PCD header line");
+  pcl::io::savePCDFileASCII(file("billion.pcd"), cloud);
+  rewrite(file("billion.pcd"), "WIDTH 1740", "WIDTH 1000000000");
+  rewrite(file("billion.pcd"), "POINTS 1740", "POINTS 1000000000");
+  add("billion.pcd", "claims 1000000000 points of 16 bytes (ascii), at least 7.5 GiB of data");
+  pcl::io::savePCDFileBinary(file("more.pcd"), cloud);
+  rewrite(file("more.pcd"), "WIDTH 1740", "WIDTH 1741");
+  rewrite(file("more.pcd"), "POINTS 1740", "POINTS 1741");
+  add("more.pcd", "claims 1741 points of 16 bytes (binary), at least 27856 bytes of data, but "
+                  "the file holds 27840 bytes after its header");
+  pcl::io::savePCDFileBinaryCompressed(file("inflate.pcd"), cloud);
+  rewrite(file("inflate.pcd"), "WIDTH 1740", "WIDTH 1739");
+  rewrite(file("inflate.pcd"), "POINTS 1740", "POINTS 1739");
+  add("inflate.pcd", "claims 1739 points of 16 bytes (27824 bytes), but its compressed data "
+                     "inflate to 27840 bytes");
+  pcl::io::savePCDFileASCII(file("points.pcd"), cloud);
+  rewrite(file("points.pcd"), "POINTS 1740", "POINTS 1739");
+  add("points.pcd", "WIDTH 1740 x HEIGHT 1 is not POINTS 1739");
+  pcl::io::savePCDFileASCII(file("size.pcd"), cloud);
+  rewrite(file("size.pcd"), "SIZE 4 4 4 4", "SIZE 4 4 4 4 4");
+  add("size.pcd", "FIELDS names 4 fields, but SIZE, TYPE or COUNT has 5 entries");
+  pcl::io::savePCDFileASCII(file("negative.pcd"), cloud);
+  rewrite(file("negative.pcd"), "WIDTH 1740", "WIDTH -1740");
+  add("negative.pcd", "WIDTH '-1740' is not a whole number");
+  pcl::io::savePCDFileBinary(file("capped.pcd"), cloud);
+  add("capped.pcd", "claims 1740 points of 16 bytes, which would need 82 KiB in memory, over "
+                    "the memory cap of 64 KiB", 64 << 10);
+
+  std::ofstream(file("billion.ply"), std::ios::binary)
+    << "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
+       "property float y\nproperty float z\nend_header\n";
+  add("billion.ply", "claims 2000000000 vertices (binary_little_endian), at least 22 GiB of "
+                     "data, but the file holds 0 bytes after its header");
+  pcl::io::savePLYFile(file("faces.ply"), sphere_mesh(1.0f, 30, 60));  // ascii
+  rewrite(file("faces.ply"), "element face 3480", "element face 34800000");
+  add("faces.ply", "claims 1742 vertices, 34800000 faces (ascii)");
+  pcl::io::savePLYFileBinary(file("type.ply"), cloud);
+  rewrite(file("type.ply"), "property float x", "property float128 x");
+  add("type.ply", "not a readable PLY file (header line 5, 'property float128 x')");
+  gzip(file("billion.ply"), file("billion.ply.gz"));
+  add("billion.ply.gz", "billion.ply.gz: its header claims 2000000000 vertices");
+  pcl::io::savePLYFileBinary(file("capped.ply"), cloud);
+  gzip(file("capped.ply"), file("capped.ply.gz"));
+  add("capped.ply.gz", "inflates to more than the memory cap of 16 KiB", 16 << 10);
+  pcl::io::savePLYFileBinary(file("mesh.ply"), sphere_mesh(1.0f, 30, 60));
+  add("mesh.ply", "1000000000 mesh samples would need 75 GiB in memory, over the memory cap of "
+                  "1.0 GiB", std::size_t{1} << 30, 1000000000);
+
+  for (const Case& c : cases) {
+    try {
+      sss::loadPointCloud<pcl::PointXYZRGB>(file(c.name), c.options);
+      ADD_FAILURE() << c.name << ": loaded; expected \"" << c.words << "\"";
+    } catch (const sss::InputError& e) {
+      std::printf("[ lying header ] %s\n", e.what());
+      EXPECT_NE(std::string(e.what()).find(c.words), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind(file(c.name), 0), 0u) << "names the file";
+    }
+  }
+  // The honest files these came from still load, under a cap that fits them.
+  sss::LoadOptions fits;
+  fits.memory_cap = 1 << 20;
+  EXPECT_EQ(sss::loadPointCloud<pcl::PointXYZRGB>(file("capped.pcd"), fits).cloud->size(), 1740u);
+  EXPECT_EQ(sss::loadPointCloud<pcl::PointXYZRGB>(file("capped.ply.gz"), fits).cloud->size(), 1740u);
+}
+
+// Every shared file passes the header checks and loads with its header's point count.
+TEST(PclGlueScans, EverySharedFileLoadsWithItsHeadersCount) {
+  const std::pair<const char*, std::size_t> files[] = {
+    {"bunny.pcd", 397}, {"bun0.pcd", 397}, {"milk.pcd", 13704}, {"milk_color.pcd", 13704},
+    {"milk_cartoon_all_small_clorox.pcd", 307200}, {"table_scene_mug_stereo_textured.pcd", 307200},
+    {"stanford_bunny.ply", 35947}, {"dragon_vrip_res2.ply.gz", 100250},
+    {"CSite1_red1-utm.pcd", 522674}};
+  int found = 0;
+  for (const auto& [name, points] : files) {
+    const std::string path = sss::test::shared_data(name);
+    if (path.empty()) continue;
+    ++found;
+    EXPECT_EQ(sss::loadPointCloud<pcl::PointXYZ>(path).cloud->size(), points) << name;
+  }
+  if (found == 0) GTEST_SKIP() << "the shared data folder is absent";
 }
 
 TEST(PclGlueScans, SharedCloudsLoad) {

@@ -69,6 +69,20 @@ TEST(RenderInput, BadInputGivesOneMessageNonZeroExitAndNoFile) {
   two.push_back(pcl::PointXYZ(1, 0, 0));
   pcl::io::savePCDFileASCII("two_points.pcd", two);
   expect_refused("two_points.pcd", "too few to estimate normals");
+
+  // A header PCL's reader crashed on, and one that made it allocate until killed.
+  pcl::io::savePCDFileASCII("version.pcd", two);
+  {
+    std::ifstream in("version.pcd");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("VERSION"), 7, "V@RSION");
+    std::ofstream("version.pcd", std::ios::trunc) << text;
+  }
+  expect_refused("version.pcd", "'V@RSION 0.7', is not a PCD header line");
+  std::ofstream("billion.ply")
+    << "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
+       "property float y\nproperty float z\nend_header\n";
+  expect_refused("billion.ply", "billion.ply: its header claims 2000000000 vertices");
 }
 
 TEST(RenderInput, OrganisedCloudWithHolesAndColoursRenders) {

@@ -20,6 +20,7 @@
 
 #include <vector>
 
+#include "sssFileClaims.h"
 #include "sssPclMeshSampling.h"
 
 namespace sss {
@@ -47,10 +48,11 @@ class QuietPclConsole {
   pcl::console::VERBOSITY_LEVEL saved_;
 };
 
-// A gzip file inflated into a temporary file that is removed with this object.
+// A gzip file inflated into a temporary file that is removed with this object; one that
+// inflates to more than `cap` bytes is refused (a PLY that large cannot load under the cap).
 class InflatedCopy {
  public:
-  InflatedCopy(const std::string& path, const std::string& suffix) {
+  InflatedCopy(const std::string& path, const std::string& suffix, std::size_t cap) {
     std::string pattern =
       (std::filesystem::temp_directory_path() / ("sss-inflated-XXXXXX" + suffix)).string();
     const int fd = mkstemps(pattern.data(), static_cast<int>(suffix.size()));
@@ -59,14 +61,27 @@ class InflatedCopy {
     gzFile in = gzopen(path.c_str(), "rb");
     bool ok = in != nullptr;
     std::vector<char> buffer(1 << 20);
+    std::size_t inflated = 0;
+    bool over_cap = false;
     while (ok) {
       const int n = gzread(in, buffer.data(), static_cast<unsigned>(buffer.size()));
       if (n < 0) ok = false;
       if (n <= 0) break;
+      inflated += static_cast<std::size_t>(n);
+      if (inflated > cap) {
+        ok = false;
+        over_cap = true;
+        break;
+      }
       ok = write(fd, buffer.data(), static_cast<std::size_t>(n)) == n;
     }
     if (in) gzclose(in);
     close(fd);
+    if (over_cap) {
+      std::remove(path_.c_str());
+      throw InputError(path + ": inflates to more than the memory cap of " + byteSize(cap) +
+                       " (LoadOptions::memory_cap, --memory-cap)");
+    }
     if (!ok) {
       std::remove(path_.c_str());
       throw InputError(path + ": not a readable gzip file");
@@ -88,25 +103,8 @@ struct Blob {
   std::string kind;
 };
 
-// PCL's PCD reader can crash on a file whose header is not PCD, so the header is checked
-// first: the keys up to DATA, in a text header of bounded size.
-void check_pcd_header(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::vector<std::string> keys;
-  for (int lines = 0; lines < 64 && std::getline(in, line); ++lines) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::string key = line.substr(0, line.find_first_of(" \t\r"));
-    keys.push_back(key);
-    if (key == "DATA") break;
-  }
-  for (const char* required : {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS", "DATA"})
-    if (std::find(keys.begin(), keys.end(), required) == keys.end())
-      throw InputError(path + ": not a readable PCD file (its header has no " + required + " line)");
-}
-
-Blob read_pcd(const std::string& path) {
-  check_pcd_header(path);
+Blob read_pcd(const std::string& path, std::size_t cap, std::size_t point_bytes) {
+  checkPcdClaims(path, path, cap, point_bytes);  // PCL's reader trusts its header
   Blob blob;
   if (pcl::io::loadPCDFile(path, blob.points, blob.sensor_origin, blob.sensor_orientation) < 0)
     throw InputError(path + ": not a readable PCD file");
@@ -114,7 +112,9 @@ Blob read_pcd(const std::string& path) {
   return blob;
 }
 
-Blob read_ply(const std::string& shown_path, const std::string& path, const LoadOptions& options) {
+Blob read_ply(const std::string& shown_path, const std::string& path, const LoadOptions& options,
+              std::size_t cap, std::size_t point_bytes) {
+  checkPlyClaims(shown_path, path, cap, point_bytes);
   pcl::PolygonMesh mesh;
   if (pcl::io::loadPLYFile(path, mesh) < 0) throw InputError(shown_path + ": not a readable PLY file");
   Blob blob;
@@ -152,14 +152,24 @@ Blob read_ply(const std::string& shown_path, const std::string& path, const Load
   return blob;
 }
 
-Blob read_any(const std::string& path, const LoadOptions& options) {
+Blob read_any(const std::string& path, const LoadOptions& options, std::size_t point_bytes) {
   if (!std::ifstream(path).good()) throw InputError(path + ": cannot be opened");
   if (std::filesystem::is_directory(path)) throw InputError(path + ": is a folder, not a file");
-  if (ends_with(path, ".pcd")) return read_pcd(path);
-  if (ends_with(path, ".ply")) return read_ply(path, path, options);
+  const std::size_t cap = options.memory_cap ? options.memory_cap : defaultMemoryCap();
+  if (options.mesh_samples > 0) {
+    const long double samples =
+      static_cast<long double>(options.mesh_samples) * (sizeof(pcl::PointXYZRGBNormal) + point_bytes);
+    if (samples > cap)
+      throw InputError(path + ": " + std::to_string(options.mesh_samples) +
+                       " mesh samples would need " + byteSize(samples) +
+                       " in memory, over the memory cap of " + byteSize(cap) +
+                       " (LoadOptions::memory_cap, --memory-cap)");
+  }
+  if (ends_with(path, ".pcd")) return read_pcd(path, cap, point_bytes);
+  if (ends_with(path, ".ply")) return read_ply(path, path, options, cap, point_bytes);
   if (ends_with(path, ".ply.gz")) {
-    const InflatedCopy plain(path, ".ply");
-    return read_ply(path, plain.path(), options);
+    const InflatedCopy plain(path, ".ply", cap);
+    return read_ply(path, plain.path(), options, cap, point_bytes);
   }
   throw InputError(path + ": unknown extension (use .pcd, .ply or .ply.gz)");
 }
@@ -169,7 +179,7 @@ Blob read_any(const std::string& path, const LoadOptions& options) {
 template <typename PointT>
 LoadedPointCloud<PointT> loadPointCloud(const std::string& path, const LoadOptions& options) {
   const QuietPclConsole quiet;
-  const Blob blob = read_any(path, options);
+  const Blob blob = read_any(path, options, sizeof(PointT));
   const std::size_t count = std::size_t{blob.points.width} * blob.points.height;
   if (count == 0 || blob.points.data.empty()) throw InputError(path + ": the file has no points");
 

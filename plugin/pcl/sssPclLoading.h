@@ -23,6 +23,9 @@ struct LoadOptions {
   // samples N points uniformly over the triangles' area instead, as pcl_mesh_sampling does.
   std::size_t mesh_samples = 0;
   unsigned sampling_seed = 1;
+  // Bytes a load may claim (PCL's data, the cloud, samples, an inflated .gz); a header that
+  // claims more is refused before anything is allocated. 0: half the physical memory.
+  std::size_t memory_cap = 0;
 };
 
 template <typename PointT>
