@@ -9,6 +9,7 @@ packages=(
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth libglx-mesa0
   python3-matplotlib
+  clang libclang-rt-14-dev
 )
 
 missing=()

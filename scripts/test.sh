@@ -10,6 +10,8 @@ bash scripts/setup.sh
 bash scripts/build.sh
 echo "== release build: all tests"
 ctest --test-dir build --output-on-failure -j1
+echo "== fuzzing: the loaders and the option parser, ${SSS_FUZZ_SECONDS:-60} s each"
+bash scripts/fuzz.sh
 echo "== ASan + UBSan build: core tests"
 mkdir -p build-sanitize
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSS_SANITIZE=ON \

@@ -285,12 +285,16 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
     return 0;
   };
   std::vector<Element> elements;
+  std::vector<std::string> vertex_bytes;  // the vertex element's one-byte unsigned properties
   std::string format;
+  std::int64_t columns = -1, rows = -1;  // obj_info num_cols / num_rows
   for (std::size_t l = 1; l < lines.size(); ++l) {
     const std::vector<std::string> w = words(lines[l]);
     const std::string where = " (header line " + std::to_string(l + 1) + ", '" +
                               lines[l].substr(0, 40) + "')";
     if (w.empty()) refuse(shown, "not a readable PLY file" + where);
+    if (w[0] == "obj_info" && w.size() >= 3 && (w[1] == "num_cols" || w[1] == "num_rows"))
+      (w[1] == "num_cols" ? columns : rows) = std::atoll(w[2].c_str());  // as PCL reads them
     if (w[0] == "comment" || w[0] == "obj_info" || w[0] == "end_header") continue;
     if (w[0] == "format") {
       if (!format.empty() || w.size() != 3 || w[2] != "1.0" ||
@@ -298,14 +302,22 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
         refuse(shown, "not a readable PLY file" + where);
       format = w[1];
     } else if (w[0] == "element" && w.size() == 3) {
+      if (w[1] == "range_grid")  // PCL's reader indexes vertices from it unchecked
+        refuse(shown, "not a readable PLY file (range_grid elements are not supported" + where +
+                        ")");
       elements.push_back({w[1], whole(shown, "element " + w[1] + " count", w[2])});
     } else if (w[0] == "property" && !elements.empty() && w.size() == 3 && type_bytes(w[1])) {
+      if (elements.back().name == "vertex" && (w[1] == "uchar" || w[1] == "uint8"))
+        vertex_bytes.push_back(w[2]);
       elements.back().fixed_bytes += type_bytes(w[1]);
       elements.back().scalar_bytes += type_bytes(w[1]);
       elements.back().values += 1;
     } else if (w[0] == "property" && !elements.empty() && w.size() == 5 && w[1] == "list" &&
                type_bytes(w[2]) && w[2].find("float") == std::string::npos &&
                w[2] != "double" && type_bytes(w[3])) {
+      if (elements.back().name == "vertex")  // PCL's reader aborts on some of these
+        refuse(shown, "not a readable PLY file (a list property in the vertex element" + where +
+                        ")");
       elements.back().fixed_bytes += type_bytes(w[2]);
       elements.back().values += 1;
     } else {
@@ -317,6 +329,32 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
                                    [](const Element& e) { return e.name == "vertex"; });
   if (vertex == elements.end())
     refuse(shown, "not a readable PLY file (its header has no vertex element)");
+
+  // PCL's reader packs one-byte red, green and blue into rgb as they arrive and aborts on a
+  // colour whose red is missing or comes later, and on alpha without them.
+  for (const char* prefix : {"", "diffuse_"}) {
+    const std::string red = std::string(prefix) + "red";
+    const auto at = [&](const std::string& name) {
+      return std::find(vertex_bytes.begin(), vertex_bytes.end(), name) - vertex_bytes.begin();
+    };
+    const auto none = static_cast<std::ptrdiff_t>(vertex_bytes.size());
+    for (const std::string later : {std::string(prefix) + "green", std::string(prefix) + "blue"})
+      if (at(later) != none && !(at(red) < at(later)))
+        refuse(shown, "not a readable PLY file (its vertices have a uchar " + later +
+                        " without a uchar " + red + " before it)");
+  }
+  if (std::find(vertex_bytes.begin(), vertex_bytes.end(), "alpha") != vertex_bytes.end() &&
+      std::find(vertex_bytes.begin(), vertex_bytes.end(), "red") == vertex_bytes.end() &&
+      std::find(vertex_bytes.begin(), vertex_bytes.end(), "diffuse_red") == vertex_bytes.end())
+    refuse(shown, "not a readable PLY file (its vertices have a uchar alpha without red, green "
+                  "and blue)");
+  // PCL sizes the vertices by obj_info's columns and rows where the header gives them.
+  if ((columns >= 0 || rows >= 0) &&
+      !(columns >= 0 && rows >= 0 &&
+        static_cast<long double>(columns) * rows == static_cast<long double>(vertex->count)))
+    refuse(shown, "not a readable PLY file (obj_info num_cols " + std::to_string(columns) +
+                    " x num_rows " + std::to_string(rows) + " is not its " +
+                    std::to_string(vertex->count) + " vertices)");
 
   long double data = 0, memory = 0;
   std::string claim;

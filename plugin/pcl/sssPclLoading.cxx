@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -103,6 +104,21 @@ struct Blob {
   std::string kind;
 };
 
+// PCL's PLY reader takes the cloud's width and height from the file's camera element, which
+// can disagree with the vertices it read, and conversion trusts the layout: check it first.
+void check_layout(const std::string& path, const pcl::PCLPointCloud2& points) {
+  const std::uint64_t step = points.point_step;
+  bool ok = step > 0 && points.row_step >= std::uint64_t{points.width} * step &&
+            points.data.size() >= std::uint64_t{points.row_step} * points.height;
+  for (const pcl::PCLPointField& f : points.fields)
+    ok = ok && std::uint64_t{f.offset} + std::uint64_t{f.count} * pcl::getFieldSize(f.datatype) <= step;
+  if (!ok)
+    throw InputError(path + ": not a readable point cloud (its layout, " +
+                     std::to_string(points.width) + " x " + std::to_string(points.height) +
+                     " points of " + std::to_string(step) + " bytes, does not match the " +
+                     std::to_string(points.data.size()) + " bytes read)");
+}
+
 Blob read_pcd(const std::string& path, std::size_t cap, std::size_t point_bytes) {
   checkPcdClaims(path, path, cap, point_bytes);  // PCL's reader trusts its header
   Blob blob;
@@ -117,6 +133,9 @@ Blob read_ply(const std::string& shown_path, const std::string& path, const Load
   checkPlyClaims(shown_path, path, cap, point_bytes);
   pcl::PolygonMesh mesh;
   if (pcl::io::loadPLYFile(path, mesh) < 0) throw InputError(shown_path + ": not a readable PLY file");
+  check_layout(shown_path, mesh.cloud);
+  if (std::uint64_t{mesh.cloud.width} * mesh.cloud.height == 0)  // PCL's conversions need one
+    throw InputError(shown_path + ": the file has no points");
   Blob blob;
   if (mesh.polygons.empty()) {
     if (options.mesh_samples > 0)
@@ -179,9 +198,17 @@ Blob read_any(const std::string& path, const LoadOptions& options, std::size_t p
 template <typename PointT>
 LoadedPointCloud<PointT> loadPointCloud(const std::string& path, const LoadOptions& options) {
   const QuietPclConsole quiet;
-  const Blob blob = read_any(path, options, sizeof(PointT));
+  Blob blob;
+  try {
+    blob = read_any(path, options, sizeof(PointT));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {  // PCL's readers throw their own kinds on some files
+    throw InputError(path + ": not a readable point cloud (" + e.what() + ")");
+  }
   const std::size_t count = std::size_t{blob.points.width} * blob.points.height;
   if (count == 0 || blob.points.data.empty()) throw InputError(path + ": the file has no points");
+  check_layout(path, blob.points);
 
   LoadedPointCloud<PointT> loaded;
   loaded.path = path;

@@ -14,14 +14,15 @@ struct Triangle {
   pcl::index_t a, b, c;
 };
 
-// Polygons fanned into triangles, dropping corners that name no vertex.
+// Polygons fanned into triangles, dropping those with a corner that names no vertex.
 std::vector<Triangle> triangles_of(const pcl::PolygonMesh& mesh, std::size_t vertex_count) {
   std::vector<Triangle> triangles;
   for (const pcl::Vertices& polygon : mesh.polygons) {
     const auto& v = polygon.vertices;
     for (std::size_t k = 2; k < v.size(); ++k) {
       const Triangle t{v[0], v[k - 1], v[k]};
-      if (static_cast<std::size_t>(std::max({t.a, t.b, t.c})) < vertex_count) triangles.push_back(t);
+      const auto [lowest, highest] = std::minmax({t.a, t.b, t.c});
+      if (lowest >= 0 && static_cast<std::size_t>(highest) < vertex_count) triangles.push_back(t);
     }
   }
   return triangles;
