@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "tone_map.h"
+#include "whole_file.h"
 
 namespace sss {
 
@@ -21,10 +22,7 @@ double LinearImage::max_value() const {
 }
 
 void write_pfm(const LinearImage& image, const std::string& path) {
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary);
-    if (!out) throw std::runtime_error("[sss::write_pfm] cannot write " + partial);
+  write_whole_file(path, [&](std::ostream& out) {
     out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
     std::vector<float> row(3 * static_cast<std::size_t>(image.width));
     for (int j = 0; j < image.height; ++j) {
@@ -33,15 +31,7 @@ void write_pfm(const LinearImage& image, const std::string& path) {
       out.write(reinterpret_cast<const char*>(row.data()),
                 static_cast<std::streamsize>(row.size() * sizeof(float)));
     }
-    if (!out.flush()) {
-      std::remove(partial.c_str());
-      throw std::runtime_error("[sss::write_pfm] failed while writing " + partial);
-    }
-  }
-  if (std::rename(partial.c_str(), path.c_str()) != 0) {
-    std::remove(partial.c_str());
-    throw std::runtime_error("[sss::write_pfm] cannot rename " + partial + " to " + path);
-  }
+  });
 }
 
 LinearImage read_pfm(const std::string& path) {

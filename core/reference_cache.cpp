@@ -5,10 +5,11 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
-#include <random>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
+
+#include "whole_file.h"
 
 namespace sss {
 namespace {
@@ -288,27 +289,14 @@ void store_cached_reference(const std::filesystem::path& dir, const ReferenceKey
   if (error)
     throw std::runtime_error(where + "cannot create folder " + dir.string() + ": " +
                              error.message());
-  // A name of its own per writer, so that runs sharing the folder never mix their bytes.
-  std::random_device entropy;
+  // Written whole: runs sharing the folder never read another's half-written entry.
   const std::filesystem::path file = dir / key.file_name();
-  const std::filesystem::path partial =
-      file.string() + "." + hex16((std::uint64_t{entropy()} << 32) | entropy()) + ".partial";
-  {
-    std::ofstream stream(partial, std::ios::binary);
-    if (!stream) throw std::runtime_error(where + "cannot write " + partial.string());
-    stream.write(out.bytes().data(), static_cast<std::streamsize>(out.bytes().size()));
-    if (!stream.flush()) {
-      stream.close();
-      std::filesystem::remove(partial, error);
-      throw std::runtime_error(where + "failed while writing " + partial.string());
-    }
-  }
-  std::filesystem::rename(partial, file, error);
-  if (error) {
-    const std::string why = error.message();
-    std::filesystem::remove(partial, error);
-    throw std::runtime_error(where + "cannot rename " + partial.string() + " to " +
-                             file.string() + ": " + why);
+  try {
+    write_whole_file(file.string(), [&](std::ostream& stream) {
+      stream.write(out.bytes().data(), static_cast<std::streamsize>(out.bytes().size()));
+    });
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(where + e.what());
   }
 }
 

@@ -1,8 +1,8 @@
 #include "baked_ply.h"
 
-#include <cstdio>
-#include <fstream>
 #include <stdexcept>
+
+#include "whole_file.h"
 
 namespace sss::cli {
 
@@ -10,9 +10,7 @@ void write_baked_ply(const std::vector<Eigen::Vector3d>& positions, const std::v
                      const std::string& path) {
   if (positions.size() != Lo.size())
     throw std::invalid_argument("[write_baked_ply] positions and radiance differ in count");
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary);
+  write_whole_file(path, [&](std::ostream& out) {
     out << "ply\nformat binary_little_endian 1.0\n"
         << "comment outgoing radiance Lo (eq. 14) towards the camera, linear\n"
         << "element vertex " << positions.size() << "\n"
@@ -24,15 +22,7 @@ void write_baked_ply(const std::vector<Eigen::Vector3d>& positions, const std::v
                             static_cast<float>(Lo[i][2])};
       out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
     }
-    if (!out.flush()) {
-      std::remove(partial.c_str());
-      throw std::runtime_error("cannot write " + partial);
-    }
-  }
-  if (std::rename(partial.c_str(), path.c_str()) != 0) {
-    std::remove(partial.c_str());
-    throw std::runtime_error("cannot write " + path);
-  }
+  });
 }
 
 }  // namespace sss::cli

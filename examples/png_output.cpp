@@ -4,23 +4,18 @@
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 
-#include <cstdio>
-#include <fstream>
-#include <stdexcept>
+#include "whole_file.h"
 
 namespace sss::cli {
 
 void write_png(vtkImageData* pixels, const std::string& path) {
-  const std::string partial = path + ".partial";
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(partial.c_str());
-  writer->SetInputData(pixels);
-  writer->Write();
-  if (writer->GetErrorCode() != 0 || !std::ifstream(partial).good() ||
-      std::rename(partial.c_str(), path.c_str()) != 0) {
-    std::remove(partial.c_str());
-    throw std::runtime_error("cannot write " + path);
-  }
+  write_whole_file_named(path, [&](const std::string& temporary) {
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputData(pixels);
+    writer->Write();
+    return writer->GetErrorCode() == 0;
+  });
 }
 
 }  // namespace sss::cli

@@ -35,6 +35,7 @@
 #include "splat_coverage.h"
 #include "stopwatch.h"
 #include "translucent_scene.h"
+#include "whole_file.h"
 
 namespace {
 
@@ -563,14 +564,13 @@ int run(Options o) {
   if (!o.settings.empty()) o.scale_points.clear();  // a custom sweep measures only itself
   fs::create_directories(o.out);
   const fs::path csv_path = o.out / "bench.csv";
-  std::ofstream csv(csv_path);
-  if (!csv) throw std::runtime_error("cannot write " + csv_path.string());
-  csv << kColumns << '\n';
   sss::Stopwatch clock;
-  if (!o.scale_only)
-    for (const Cloud& cloud : clouds_of(o)) run_sweep(o, cloud, csv);
-  run_scale(o, csv);
-  csv.close();
+  sss::write_whole_file(csv_path.string(), [&](std::ostream& csv) {  // whole, or none
+    csv << kColumns << '\n';
+    if (!o.scale_only)
+      for (const Cloud& cloud : clouds_of(o)) run_sweep(o, cloud, csv);
+    run_scale(o, csv);
+  });
   std::fprintf(stderr, "wrote %s (%.0f s)\n", csv_path.string().c_str(), clock.lap());
   const std::string report = std::string("/usr/bin/python3 '") + SSS_BENCH_REPORT + "' '" +
                              csv_path.string() + "' --out-dir '" + o.out.string() + "'";

@@ -40,6 +40,7 @@
 #include "render_window.h"
 #include "translucent_scene.h"
 #include "stopwatch.h"
+#include "whole_file.h"
 
 namespace {
 
@@ -57,6 +58,24 @@ std::string json_vector(const Eigen::Vector3d& v) {
   return text;
 }
 
+// A JSON string literal: quotes, backslashes and control characters escaped.
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string json_rgb(const sss::Rgb& v) { return json_vector(Eigen::Vector3d(v[0], v[1], v[2])); }
 
 struct Timings {
@@ -66,12 +85,10 @@ struct Timings {
 
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
                  vtkSubsurfacePass* pass, const Timings& t, const std::string& path) {
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream out(partial);
+  sss::write_whole_file(path, [&](std::ostream& out) {
     out << "{\n  \"method\": \"" << o.method << "\",\n  \"backend\": \"" << o.backend
         << "\",\n  \"strategy\": \"" << pass->GetKernelStrategyAsString() << "\",\n"
-        << "  \"input\": \"" << (o.input.empty() ? "procedural torus" : o.input) << "\",\n"
+        << "  \"input\": " << json_string(o.input.empty() ? "procedural torus" : o.input) << ",\n"
         << "  \"material\": {\"name\": \"" << m.name << "\", \"sigma_a_per_mm\": "
         << json_rgb(m.sigma_a) << ", \"sigma_s_prime_per_mm\": " << json_rgb(m.sigma_s_prime)
         << ", \"eta\": " << json_rgb(m.eta) << ", \"mm_per_unit\": " << m.mm_per_unit << "},\n"
@@ -115,12 +132,7 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"light_static_seconds\": " << t.light_static
         << ", \"light_moving_seconds\": " << t.light_moving
         << ", \"plain_vtk_points_seconds\": " << t.plain_points << "}\n}\n";
-    if (!out.flush()) throw std::runtime_error("cannot write " + partial);
-  }
-  if (std::rename(partial.c_str(), path.c_str()) != 0) {
-    std::remove(partial.c_str());
-    throw std::runtime_error("cannot write " + path);
-  }
+  });
 }
 
 int run(const Options& o) {

@@ -162,6 +162,14 @@ void RestoreEnvironment()
 }
 
 bool ReexecAttempted = false;
+
+// A process built with AddressSanitizer's shared runtime must keep that runtime first among
+// its libraries, so the re-exec preloads it ahead of the shim; empty for other processes.
+std::string SanitizerRuntime()
+{
+  const std::string runtime = LibraryOf(dlsym(RTLD_DEFAULT, "__asan_init"));
+  return runtime.find("libasan") != std::string::npos ? runtime : std::string();
+}
 }
 
 vtkStandardNewMacro(vtkOSMesaRenderWindow);
@@ -333,7 +341,9 @@ bool vtkOSMesaRenderWindow::EnsureProcessIsOSMesaReady(int argc, char** argv, st
   {
     setenv(SavedPreload, old, 1);
   }
-  const std::string value = (old && *old) ? preload + ":" + old : preload;
+  const std::string runtime = SanitizerRuntime();
+  const std::string first = runtime.empty() ? preload : runtime + ":" + preload;
+  const std::string value = (old && *old) ? first + ":" + old : first;
   setenv("LD_PRELOAD", value.c_str(), 1);
   setenv(ReexecMarker, "1", 1);
 

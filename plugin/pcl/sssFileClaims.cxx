@@ -338,7 +338,7 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
       return std::find(vertex_bytes.begin(), vertex_bytes.end(), name) - vertex_bytes.begin();
     };
     const auto none = static_cast<std::ptrdiff_t>(vertex_bytes.size());
-    for (const std::string later : {std::string(prefix) + "green", std::string(prefix) + "blue"})
+    for (const std::string& later : {std::string(prefix) + "green", std::string(prefix) + "blue"})
       if (at(later) != none && !(at(red) < at(later)))
         refuse(shown, "not a readable PLY file (its vertices have a uchar " + later +
                         " without a uchar " + red + " before it)");
