@@ -1,19 +1,34 @@
 #include "whole_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
-#include <atomic>
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
+#include <random>
 #include <stdexcept>
 
 namespace sss {
 namespace {
 
-// A name beside `path` that no other process or write of this one uses at the same time.
+// Creates an empty file beside `path` under a name no other writer uses, on this machine or
+// another sharing the folder (64 random bits, created exclusively), with the permissions a
+// new file gets here.
 std::string temporary_beside(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  return path + "." + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".partial";
+  std::random_device entropy;
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    char suffix[32];
+    std::snprintf(suffix, sizeof suffix, ".%08x%08x.partial", entropy(), entropy());
+    const std::string name = path + suffix;
+    const int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      close(fd);
+      return name;
+    }
+    if (errno != EEXIST) break;
+  }
+  throw std::runtime_error("cannot write " + path + ": cannot create a file in its folder");
 }
 
 void fail(const std::string& path, const std::string& temporary, const std::string& why) {

@@ -1,6 +1,6 @@
-// Files written whole or not at all: the bytes go to a temporary file of this process beside
-// the target, renamed onto it only once complete, so that a reader, or a process killed in the
-// middle of a write, finds the old file, the new one or none.
+// Files written whole or not at all: the bytes go to a temporary file beside the target, under
+// a random name of its own, renamed onto it only once complete, so that a reader, or a process
+// killed in the middle of a write, finds the old file, the new one or none.
 #pragma once
 
 #include <functional>

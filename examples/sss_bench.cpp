@@ -565,12 +565,12 @@ int run(Options o) {
   fs::create_directories(o.out);
   const fs::path csv_path = o.out / "bench.csv";
   sss::Stopwatch clock;
-  sss::write_whole_file(csv_path.string(), [&](std::ostream& csv) {  // whole, or none
-    csv << kColumns << '\n';
-    if (!o.scale_only)
-      for (const Cloud& cloud : clouds_of(o)) run_sweep(o, cloud, csv);
-    run_scale(o, csv);
-  });
+  std::ostringstream csv;  // written whole once every row is measured
+  csv << kColumns << '\n';
+  if (!o.scale_only)
+    for (const Cloud& cloud : clouds_of(o)) run_sweep(o, cloud, csv);
+  run_scale(o, csv);
+  sss::write_whole_file(csv_path.string(), [&](std::ostream& out) { out << csv.str(); });
   std::fprintf(stderr, "wrote %s (%.0f s)\n", csv_path.string().c_str(), clock.lap());
   const std::string report = std::string("/usr/bin/python3 '") + SSS_BENCH_REPORT + "' '" +
                              csv_path.string() + "' --out-dir '" + o.out.string() + "'";

@@ -376,6 +376,14 @@ TEST_F(PclGlue, LyingHeadersAreRefusedBeforeAllocating) {
   add("capped.pcd", "claims 1740 points of 16 bytes, which would need 82 KiB in memory, over "
                     "the memory cap of 64 KiB", 64 << 10);
 
+  std::ofstream(file("order.pcd"))  // PCL sized its buffer at POINTS, then wrote 3x past it
+    << "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 2\nHEIGHT 1\nPOINTS 2\nCOUNT 3 3 3\n"
+       "DATA ascii\n1 2 3 4 5 6 7 8 9\n1 2 3 4 5 6 7 8 9\n";
+  add("order.pcd", "needs FIELDS, SIZE, TYPE and COUNT in that order, before POINTS");
+  pcl::io::savePCDFileBinary(file("after.pcd"), cloud);  // PCL reads header lines after DATA
+  rewrite(file("after.pcd"), "DATA binary\n", "DATA binary\nPOINTS 3000000000\n");
+  add("after.pcd", "a POINTS line after DATA");
+
   std::ofstream(file("billion.ply"), std::ios::binary)
     << "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
        "property float y\nproperty float z\nend_header\n";
@@ -387,6 +395,13 @@ TEST_F(PclGlue, LyingHeadersAreRefusedBeforeAllocating) {
   pcl::io::savePLYFileBinary(file("type.ply"), cloud);
   rewrite(file("type.ply"), "property float x", "property float128 x");
   add("type.ply", "not a readable PLY file (header line 5, 'property float128 x')");
+  pcl::io::savePLYFileBinary(file("sizes.ply"), cloud);  // PCL's atoi: 1 x 1 for 1740
+  rewrite(file("sizes.ply"), "element vertex", "obj_info num_cols -4294967295\n"
+                                               "obj_info num_rows -4294967295\nelement vertex");
+  add("sizes.ply", "obj_info gives 1 x 1 points for its 1740 vertices");
+  pcl::io::savePLYFileBinary(file("indent.ply"), cloud);  // PCL's reader aborted on this
+  rewrite(file("indent.ply"), "element vertex", " obj_info is_mesh 0\nelement vertex");
+  add("indent.ply", "obj_info after white space");
   gzip(file("billion.ply"), file("billion.ply.gz"));
   add("billion.ply.gz", "billion.ply.gz: its header claims 2000000000 vertices");
   pcl::io::savePLYFileBinary(file("capped.ply"), cloud);
@@ -406,6 +421,14 @@ TEST_F(PclGlue, LyingHeadersAreRefusedBeforeAllocating) {
       EXPECT_EQ(std::string(e.what()).rfind(file(c.name), 0), 0u) << "names the file";
     }
   }
+  // Forms PCL reads that the checks let through: a PCD without WIDTH and HEIGHT (before 0.7),
+  // a blank line in a PLY header.
+  pcl::io::savePCDFileASCII(file("old.pcd"), cloud);
+  rewrite(file("old.pcd"), "WIDTH 1740\nHEIGHT 1\n", "");
+  EXPECT_EQ(sss::loadPointCloud<pcl::PointXYZRGB>(file("old.pcd")).cloud->size(), 1740u);
+  pcl::io::savePLYFileBinary(file("blank.ply"), cloud);
+  rewrite(file("blank.ply"), "element vertex", "\nelement vertex");
+  EXPECT_EQ(sss::loadPointCloud<pcl::PointXYZRGB>(file("blank.ply")).cloud->size(), 1740u);
   // The honest files these came from still load, under a cap that fits them.
   sss::LoadOptions fits;
   fits.memory_cap = 1 << 20;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -111,6 +112,31 @@ std::pair<std::string, std::string> sizes_apart(long double a, long double b) {
   return {sa, sb};
 }
 
+bool starts_with(const std::string& text, const char* prefix) {
+  return text.rfind(prefix, 0) == 0;
+}
+
+// The first header key PCL's reader would still take after the DATA line (it reads on while
+// lines start with one, skipping blank, comment and VERSION lines), or an empty string.
+std::string pcd_keys_after_data(std::ifstream& in) {
+  const std::streampos start = in.tellg();
+  std::string found;
+  for (int lines = 0; lines < 64 && in && found.empty(); ++lines) {
+    std::string line;
+    char c;
+    while (in.get(c) && c != '\n' && line.size() < kMaxHeaderLineBytes) line.push_back(c);
+    const std::vector<std::string> w = words(line);
+    if (w.empty() || starts_with(w[0], "#") || starts_with(w[0], "VERSION")) continue;
+    for (const char* key : {"FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT",
+                            "VIEWPOINT", "POINTS", "DATA"})
+      if (starts_with(w[0], key)) found = key;
+    break;
+  }
+  in.clear();
+  in.seekg(start);
+  return found;
+}
+
 void check_memory(const std::string& shown, const std::string& claim, long double bytes,
                   std::size_t cap) {
   if (bytes > static_cast<long double>(cap))
@@ -126,6 +152,11 @@ void check_data(const std::string& shown, const std::string& claim, long double 
     refuse(shown, "its header claims " + claim + ", at least " + need +
                     " of data, but the file holds " + have + " after its header");
   }
+}
+
+// An integer as PCL's PLY reader takes it: atoi, then stored in an unsigned 32-bit size.
+std::uint32_t as_pcl_reads_int(const std::string& text) {
+  return static_cast<std::uint32_t>(static_cast<int>(std::strtol(text.c_str(), nullptr, 10)));
 }
 
 std::string count_of(std::uint64_t n, const std::string& what) {
@@ -159,6 +190,7 @@ void checkPcdClaims(const std::string& shown, const std::string& path, std::size
 
   std::vector<std::string> fields, sizes, types, counts;
   std::uint64_t width = 0, height = 0, points = 0;
+  const auto after_data = pcd_keys_after_data(in);
   std::string data;
   std::vector<std::string> seen;
   for (std::size_t l = 0; l < lines.size(); ++l) {
@@ -195,10 +227,28 @@ void checkPcdClaims(const std::string& shown, const std::string& path, std::size
                       lines[l].substr(0, 40) + "', is not a PCD header line)");
     }
   }
-  for (const char* required : {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS", "DATA"})
-    if (std::find(seen.begin(), seen.end(), required) == seen.end())
+  if (!after_data.empty())  // PCL's reader goes on reading header lines after DATA
+    refuse(shown, "not a readable PCD file (a " + after_data + " line after DATA)");
+  const auto at = [&](const char* key) {
+    return std::find(seen.begin(), seen.end(), key) - seen.begin();
+  };
+  const auto absent = static_cast<std::ptrdiff_t>(seen.size());
+  for (const char* required : {"FIELDS", "SIZE", "TYPE", "POINTS", "DATA"})
+    if (at(required) == absent)
       refuse(shown, std::string("not a readable PCD file (its header has no ") + required +
                       " line)");
+  // PCL sizes its buffer at POINTS from the fields known then.
+  if (at("SIZE") < at("FIELDS") || at("TYPE") < at("SIZE") ||
+      (at("COUNT") != absent && at("COUNT") < at("TYPE")) || at("POINTS") < at("TYPE") ||
+      (at("COUNT") != absent && at("POINTS") < at("COUNT")))
+    refuse(shown, "not a readable PCD file (its header needs FIELDS, SIZE, TYPE and COUNT in "
+                  "that order, before POINTS)");
+  if (at("WIDTH") == absent && at("HEIGHT") == absent) {  // PCD before 0.7: PCL's defaults
+    width = points;
+    height = 1;
+  } else if (at("HEIGHT") == absent) {
+    height = 1;
+  }
   if (fields.empty()) refuse(shown, "not a readable PCD file (FIELDS names no field)");
   if (counts.empty()) counts.assign(fields.size(), "1");
   for (const auto* list : {&sizes, &types, &counts})
@@ -287,15 +337,22 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
   std::vector<Element> elements;
   std::vector<std::string> vertex_bytes;  // the vertex element's one-byte unsigned properties
   std::string format;
-  std::int64_t columns = -1, rows = -1;  // obj_info num_cols / num_rows
+  // The cloud's size as PCL's reader sets it: obj_info num_cols / num_rows, else the
+  // vertex count when the vertex element is defined while either is still 0.
+  std::uint32_t width = 0, height = 0;
   for (std::size_t l = 1; l < lines.size(); ++l) {
     const std::vector<std::string> w = words(lines[l]);
     const std::string where = " (header line " + std::to_string(l + 1) + ", '" +
                               lines[l].substr(0, 40) + "')";
-    if (w.empty()) refuse(shown, "not a readable PLY file" + where);
-    if (w[0] == "obj_info" && w.size() >= 3 && (w[1] == "num_cols" || w[1] == "num_rows"))
-      (w[1] == "num_cols" ? columns : rows) = std::atoll(w[2].c_str());  // as PCL reads them
-    if (w[0] == "comment" || w[0] == "obj_info" || w[0] == "end_header") continue;
+    if (w.empty()) continue;  // PCL's parser skips blank lines
+    if (w[0] == "obj_info") {
+      if (lines[l][0] == ' ' || lines[l][0] == '\t')  // PCL's reader aborts on these
+        refuse(shown, "not a readable PLY file (obj_info after white space" + where + ")");
+      if (w.size() >= 3 && (w[1] == "num_cols" || w[1] == "num_rows"))
+        (w[1] == "num_cols" ? width : height) = as_pcl_reads_int(w[2]);
+      continue;
+    }
+    if (w[0] == "comment" || w[0] == "end_header") continue;
     if (w[0] == "format") {
       if (!format.empty() || w.size() != 3 || w[2] != "1.0" ||
           (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
@@ -306,6 +363,14 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
         refuse(shown, "not a readable PLY file (range_grid elements are not supported" + where +
                         ")");
       elements.push_back({w[1], whole(shown, "element " + w[1] + " count", w[2])});
+      if (w[1] == "vertex") {
+        if (elements.back().count > static_cast<std::uint64_t>(INT32_MAX))
+          refuse(shown, "its header claims " + w[2] + " vertices, more than PCL can index");
+        if (width == 0 || height == 0) {
+          width = static_cast<std::uint32_t>(elements.back().count);
+          height = 1;
+        }
+      }
     } else if (w[0] == "property" && !elements.empty() && w.size() == 3 && type_bytes(w[1])) {
       if (elements.back().name == "vertex" && (w[1] == "uchar" || w[1] == "uint8"))
         vertex_bytes.push_back(w[2]);
@@ -348,12 +413,10 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
       std::find(vertex_bytes.begin(), vertex_bytes.end(), "diffuse_red") == vertex_bytes.end())
     refuse(shown, "not a readable PLY file (its vertices have a uchar alpha without red, green "
                   "and blue)");
-  // PCL sizes the vertices by obj_info's columns and rows where the header gives them.
-  if ((columns >= 0 || rows >= 0) &&
-      !(columns >= 0 && rows >= 0 &&
-        static_cast<long double>(columns) * rows == static_cast<long double>(vertex->count)))
-    refuse(shown, "not a readable PLY file (obj_info num_cols " + std::to_string(columns) +
-                    " x num_rows " + std::to_string(rows) + " is not its " +
+  // PCL sizes the vertices' buffer by that width and height, not by the vertex count.
+  if (static_cast<std::uint64_t>(width) * height != vertex->count)
+    refuse(shown, "not a readable PLY file (obj_info gives " + std::to_string(width) + " x " +
+                    std::to_string(height) + " points for its " +
                     std::to_string(vertex->count) + " vertices)");
 
   long double data = 0, memory = 0;
