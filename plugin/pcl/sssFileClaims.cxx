@@ -66,26 +66,31 @@ std::uint64_t file_size(const std::string& shown, const std::string& path) {
   return size;
 }
 
+// Reads one line without its end ('\n', and a '\r' before it); false when it runs past
+// kMaxHeaderLineBytes, which `line` then holds the start of.
+bool read_bounded_line(std::istream& in, std::string& line) {
+  line.clear();
+  char c;
+  while (in.get(c) && c != '\n') {
+    if (line.size() >= kMaxHeaderLineBytes) return false;
+    line.push_back(c);
+  }
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return true;
+}
+
 // Reads header lines up to and including `last_key`, with bounded size; returns them and
 // sets `data_offset` to the byte after the last one.
 std::vector<std::string> header_lines(const std::string& shown, std::ifstream& in,
                                       const std::string& last_key, const char* format,
                                       std::uint64_t& data_offset) {
+  const std::string unreadable = std::string("not a readable ") + format + " file (";
   std::vector<std::string> lines;
   std::string line;
   while (lines.size() < kMaxHeaderLines) {
-    line.clear();
-    char c;
-    while (in.get(c) && c != '\n') {
-      if (line.size() >= kMaxHeaderLineBytes)
-        refuse(shown, std::string("not a readable ") + format + " file (a header line is over " +
-                        byteSize(kMaxHeaderLineBytes) + ")");
-      line.push_back(c);
-    }
-    if (!in && line.empty())
-      refuse(shown, std::string("not a readable ") + format + " file (its header has no " +
-                      last_key + " line)");
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!read_bounded_line(in, line))
+      refuse(shown, unreadable + "a header line is over " + byteSize(kMaxHeaderLineBytes) + ")");
+    if (!in && line.empty()) break;
     lines.push_back(line);
     const std::vector<std::string> w = words(line);
     if (!w.empty() && w[0] == last_key) {
@@ -94,12 +99,12 @@ std::vector<std::string> header_lines(const std::string& shown, std::ifstream& i
                        : std::numeric_limits<std::uint64_t>::max();
       return lines;
     }
-    if (!in)
-      refuse(shown, std::string("not a readable ") + format + " file (its header has no " +
-                      last_key + " line)");
+    if (!in) break;
   }
-  refuse(shown, std::string("not a readable ") + format + " file (no " + last_key +
-                  " line within " + std::to_string(kMaxHeaderLines) + " header lines)");
+  if (lines.size() < kMaxHeaderLines)
+    refuse(shown, unreadable + "its header has no " + last_key + " line)");
+  refuse(shown, unreadable + "no " + last_key + " line within " +
+                  std::to_string(kMaxHeaderLines) + " header lines)");
 }
 
 // Two sizes that a reader must tell apart: in bytes where byteSize rounds them alike.
@@ -123,8 +128,7 @@ std::string pcd_keys_after_data(std::ifstream& in) {
   std::string found;
   for (int lines = 0; lines < 64 && in && found.empty(); ++lines) {
     std::string line;
-    char c;
-    while (in.get(c) && c != '\n' && line.size() < kMaxHeaderLineBytes) line.push_back(c);
+    read_bounded_line(in, line);  // only its first word matters
     const std::vector<std::string> w = words(line);
     if (w.empty() || starts_with(w[0], "#") || starts_with(w[0], "VERSION")) continue;
     for (const char* key : {"FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT",
