@@ -73,34 +73,35 @@ float poleSpread(SourceGroup g, float t)
 
 // Whether poleTermSecondOrder expands both poles of every channel at x: each pole's mean
 // farther from x than its planar minimum distance plus the poles' spread (twice their RMS
-// distance from the mean), so that no pole of the group reaches the clamp.
-bool secondOrderHolds(SourceGroup g, vec3 x)
+// distance from the mean), so that no pole of the group reaches the clamp. The far field's
+// walk calls this and dipoleRdSecondOrder at every node; they spell out the three channels
+// instead of looping over them, because llvmpipe counts every loop iteration of an invocation
+// against its limit of 65,535 (far_field.glsl).
+bool polesClear(SourceGroup g, vec3 x, float zr, float zv)
 {
-  for (int c = 0; c < 3; ++c)
-  {
-    if (length(g.p - zR[c] * g.n - x) <= zR[c] + poleSpread(g, -zR[c]) ||
-      length(g.p + zV[c] * g.n - x) <= zV[c] + poleSpread(g, zV[c]))
-    {
-      return false;
-    }
-  }
-  return true;
+  return length(g.p - zr * g.n - x) > zr + poleSpread(g, -zr) &&
+    length(g.p + zv * g.n - x) > zv + poleSpread(g, zv);
 }
 
-// Eq. 3 summed over a group of sources, each pole by its own mean and covariance.
+bool secondOrderHolds(SourceGroup g, vec3 x)
+{
+  return polesClear(g, x, zR.r, zV.r) && polesClear(g, x, zR.g, zV.g) &&
+    polesClear(g, x, zR.b, zV.b);
+}
+
+// Eq. 3 summed over a group of sources in one channel, each pole by its own mean and
+// covariance.
+float groupRd(SourceGroup g, vec3 x, float zr, float zv, float s, float factor)
+{
+  return factor *
+    (poleTermSecondOrder(g.p - zr * g.n, g.n, g.reach, x, zr, s, g.Cpp - zr * g.S + zr * zr * g.Cnn) +
+      poleTermSecondOrder(g.p + zv * g.n, g.n, g.reach, x, zv, s, g.Cpp + zv * g.S + zv * zv * g.Cnn));
+}
+
 vec3 dipoleRdSecondOrder(SourceGroup g, vec3 x)
 {
-  vec3 rd;
-  for (int c = 0; c < 3; ++c)
-  {
-    float tr = -zR[c], tv = zV[c];
-    rd[c] = rdFactor[c] *
-      (poleTermSecondOrder(g.p + tr * g.n, g.n, g.reach, x, zR[c], sTr[c],
-         g.Cpp + tr * g.S + tr * tr * g.Cnn) +
-        poleTermSecondOrder(g.p + tv * g.n, g.n, g.reach, x, zV[c], sTr[c],
-          g.Cpp + tv * g.S + tv * tv * g.Cnn));
-  }
-  return rd;
+  return vec3(groupRd(g, x, zR.r, zV.r, sTr.r, rdFactor.r), groupRd(g, x, zR.g, zV.g, sTr.g, rdFactor.g),
+    groupRd(g, x, zR.b, zV.b, sTr.b, rdFactor.b));
 }
 
 // 1 - Fresnel reflectance of an unpolarised ray (exact dielectric formula), from the side of

@@ -62,8 +62,8 @@ INSTANTIATE_TEST_SUITE_P(Materials, GpuSphereClosedForm,
 // at the points the reference does not call dark. At 2 mm nearly every cell is summed alone
 // (no group of the far field stays clear of the dipole's clamp): minutes per material on
 // llvmpipe. Ketchup at 2 mm (z_r of red twice the sphere's radius) runs only with
-// SSS_LONG_TESTS=1: it takes 8 minutes and fails today (30 % mean against the reference), an
-// open defect of the GPU far field in that regime.
+// SSS_LONG_TESTS=1: about 7 minutes with its reference uncached (GpuSphereWalk below covers
+// the same regime in seconds).
 struct Scaled {
   const char* material;
   double mm_per_unit;
@@ -89,15 +89,20 @@ TEST_P(GpuSphereAgainstReference, SamePointsAtAnotherScale) {
   const std::vector<Rgb> B = scene.render_B();
   ASSERT_EQ(B.size(), sphere.size());
   const ErrorStats e = compare_radiance(at(B, settings.receivers), at(reference.B, settings.receivers));
-  double signed_mean[3] = {0, 0, 0};
+  // Per channel, summed B over summed reference B: a bias that dark points cannot swamp.
+  double sums[2][3] = {{0, 0, 0}, {0, 0, 0}};
   for (std::size_t i : settings.receivers)
-    for (int c = 0; c < 3; ++c) signed_mean[c] += B[i][c] / reference.B[i][c] - 1.0;
-  for (double& m : signed_mean) m *= 100.0 / static_cast<double>(settings.receivers.size());
+    for (int c = 0; c < 3; ++c) {
+      sums[0][c] += B[i][c];
+      sums[1][c] += reference.B[i][c];
+    }
+  double bias[3];
+  for (int c = 0; c < 3; ++c) bias[c] = 100.0 * (sums[0][c] / sums[1][c] - 1.0);
   std::printf("[ gpu sphere ] %s, R %.0f mm, points %.3f mm apart: against the reference %s; "
-              "signed mean per channel %+.2f %+.2f %+.2f %%\n",
+              "summed B per channel %+.2f %+.2f %+.2f %% off\n",
               GetParam().material, 5000 * GetParam().mm_per_unit,
               sphere.mean_spacing() * GetParam().mm_per_unit, e.summary().c_str(),
-              signed_mean[0], signed_mean[1], signed_mean[2]);
+              bias[0], bias[1], bias[2]);
   EXPECT_LT(e.mean, 0.01);
   EXPECT_LT(e.p99, 0.05);
 }
@@ -110,6 +115,28 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) {
       return std::string(info.param.material) + (info.param.mm_per_unit > 0.001 ? "_50mm" : "_2mm");
     });
+
+// llvmpipe ends a fragment's loops after 65,535 iterations in all. A 2 mm ketchup sphere of
+// 32,000 points opens every cell of the far field's walk (z_r of red is twice the radius), so
+// each walk visits the whole subtree of a level-7 root: 16,384 cells and 5,461 groups. When
+// each node cost a few loop iterations, those walks were cut short and B came out 45 % low in
+// every channel, while 8,000 points (one smaller root) were exact.
+TEST(GpuSphereWalk, AWalkThroughAWholeRootIsNotCutShort) {
+  const SurfelCloud sphere = make_fibonacci_sphere(5000.0, 32000);
+  const Material material = Material::preset("ketchup", 1.3, 0.0004);
+  ReferenceSettings settings;
+  settings.receivers = sample_of(sphere, 400, 5);
+  const SurfelRadiance reference =
+      cached_reference(SSS_TEST_REFERENCE_CACHE, sphere, material, {{kAlongZ, 1.0}}, settings);
+  GpuScene scene(sphere, material, {{kAlongZ, 1.0}});
+  const std::vector<Rgb> B = scene.render_B();
+  ASSERT_EQ(B.size(), sphere.size());
+  const ErrorStats e = compare_radiance(at(B, settings.receivers), at(reference.B, settings.receivers));
+  std::printf("[ gpu sphere ] ketchup, R 2 mm, 32,000 points: against the reference %s\n",
+              e.summary().c_str());
+  EXPECT_LT(e.mean, 0.01);
+  EXPECT_LT(e.p99, 0.05);
+}
 
 // The truth does not depend on the sampling: a 30 mm sphere sampled 1.26 mm apart (the
 // Stanford bunny's spacing) and 0.4 mm apart gives the same B at the same place.
