@@ -2,6 +2,7 @@
 
 #include "sssGpuHelpers.h"
 #include "sssSurfelPreparation.h"
+#include "sss_dipole.h"
 #include "sss_surfel_fs.h"
 #include "sss_surfel_normalise_fs.h"
 #include "sss_surfel_gs.h"
@@ -53,14 +54,15 @@ struct vtkSurfelMapper::Internals
 
   // Blended splatting: the scene's depth with the splats' pushed back, and the weighted sums.
   vtkNew<vtkOpenGLFramebufferObject> SplatBuffer;
-  vtkSmartPointer<vtkTextureObject> SplatDepth, WeightedColour, WeightedDepth;
+  vtkSmartPointer<vtkTextureObject> SplatDepth, WeightedColour, WeightedDepth, WeightedNormal;
   int SplatDepthFormat = -1;
   bool WarnedBlit = false;
   std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
 
   void ReleaseSplatBuffers(vtkWindow* window)
   {
-    for (auto* t : { &this->SplatDepth, &this->WeightedColour, &this->WeightedDepth })
+    for (auto* t :
+      { &this->SplatDepth, &this->WeightedColour, &this->WeightedDepth, &this->WeightedNormal })
     {
       if (*t)
       {
@@ -288,6 +290,13 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     ToEigen(camera->GetProjectionTransformMatrix(aspect, -1, 1)).cast<float>();
   const double scale = std::cbrt(std::fabs(linear.determinant()));
   const std::vector<vtkOpenGLRenderPass*> passes = RenderPassesOf(act);
+  // A pixel's size in view units (orthographic) or per unit of distance (perspective).
+  const bool orthographic = camera->GetParallelProjection() != 0;
+  const double pixelSpan = height > 0
+    ? (orthographic ? 2.0 * camera->GetParallelScale()
+                    : 2.0 * std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0)) / height
+    : 0.0;
+  bool radianceFromPass = false;  // a pass (the subsurface pass) gives this actor's colour
 
   // One surfel draw: SPLAT_PASS 0 hard discs, 1 visibility, 2 accumulation (surfel_fs.glsl).
   auto draw = [&](int splatPass) -> bool
@@ -296,7 +305,8 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     vtkShaderProgram::Substitute(
       fs, "//SSS::Splat::Dec", "#define SPLAT_PASS " + std::to_string(splatPass), true);
     vtkShaderProgram::Substitute(
-      gs, "//SSS::Splat::Dec", splatPass == 1 ? "#define SPLAT_PUSH_BACK" : "", true);
+      gs, "//SSS::Splat::Dec",
+      splatPass == 1 ? "#define SPLAT_PUSH_BACK" : (splatPass == 2 ? "#define SPLAT_RIM" : ""), true);
     for (vtkOpenGLRenderPass* pass : passes)
     {
       pass->PreReplaceShaderValues(vs, gs, fs, this, act);
@@ -305,6 +315,7 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     {
       pass->PostReplaceShaderValues(vs, gs, fs, this, act);
     }
+    radianceFromPass = vs.find("//SSS::Radiance::Impl") == std::string::npos;
     RemoveHooks(vs);
     vtkShaderProgram* program =
       renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
@@ -339,7 +350,9 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     program->SetUniformf("modelToViewScale", static_cast<float>(scale));
     program->SetUniformf(
       "blendDepthVC", static_cast<float>(this->BlendDepth * prepared.view_radius * scale));
-    program->SetUniformi("orthographic", camera->GetParallelProjection() ? 1 : 0);
+    program->SetUniformi("orthographic", orthographic ? 1 : 0);
+    program->SetUniformf("pixelSpanVC", static_cast<float>(pixelSpan));
+    program->SetUniformi("viewFactorPerPixel", splatPass == 2 ? 1 : 0);
     vtkProperty* property = act->GetProperty();
     const float look[3] = { static_cast<float>(property->GetAmbient()),
       static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
@@ -412,13 +425,15 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       impl.SplatDepthFormat = depthFormat;
       impl.WeightedColour = sss::float_texture_2d(renWin, w, h);
       impl.WeightedDepth = sss::float_texture_2d(renWin, w, h, 2);
+      impl.WeightedNormal = sss::float_texture_2d(renWin, w, h);
     }
     impl.SplatBuffer->SetContext(renWin);
     impl.SplatBuffer->Bind();
     impl.SplatBuffer->AddColorAttachment(0, impl.WeightedColour);
     impl.SplatBuffer->AddColorAttachment(1, impl.WeightedDepth);
+    impl.SplatBuffer->AddColorAttachment(2, impl.WeightedNormal);
     impl.SplatBuffer->AddDepthAttachment(impl.SplatDepth);
-    impl.SplatBuffer->ActivateDrawBuffers(2);
+    impl.SplatBuffer->ActivateDrawBuffers(3);
     state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(drawn));
     while (glGetError() != GL_NO_ERROR)
     {
@@ -427,7 +442,7 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     if (glGetError() != GL_NO_ERROR)
     {
-      impl.SplatBuffer->RemoveColorAttachments(2);
+      impl.SplatBuffer->RemoveColorAttachments(3);
       impl.SplatBuffer->RemoveDepthAttachment();
       state->PopFramebufferBindings();
       if (!impl.WarnedBlit)
@@ -453,8 +468,20 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     state->vtkglDepthMask(GL_FALSE);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    // The largest coverage of a pixel by a disc goes to the normals' alpha (surfel_fs.glsl).
+    // Without per-buffer blend equations (OpenGL 4.0) coverages add up, and silhouettes are
+    // drawn without a fade.
+    const bool perBufferBlend = GLEW_VERSION_4_0 || GLEW_ARB_draw_buffers_blend;
+    if (perBufferBlend)
+    {
+      glBlendEquationSeparatei(2, GL_FUNC_ADD, GL_MAX);
+    }
     drawnAll = drawnAll && draw(2);  // accumulation of every disc within the offset
-    impl.SplatBuffer->RemoveColorAttachments(2);
+    if (perBufferBlend)
+    {
+      glBlendEquationSeparatei(2, GL_FUNC_ADD, GL_FUNC_ADD);
+    }
+    impl.SplatBuffer->RemoveColorAttachments(3);
     impl.SplatBuffer->RemoveDepthAttachment();
     state->PopFramebufferBindings();
     if (!drawnAll)
@@ -462,25 +489,54 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       return;
     }
   }
-  // Normalisation into the renderer's framebuffer, colour and depth.
-  vtkShaderProgram* normalise = sss::ready_quad(impl.Normalise, renWin, sss_surfel_normalise_fs);
+  // Normalisation into the renderer's framebuffer, colour and depth (surfel_normalise_fs.glsl):
+  // a translucent actor's pixels as they are, a plain one's blended by their coverage.
+  std::string normaliseSource = sss_surfel_normalise_fs;
+  vtkShaderProgram::Substitute(normaliseSource, "//SSS::Dipole::Dec", sss_dipole, true);
+  vtkShaderProgram* normalise = sss::ready_quad(impl.Normalise, renWin, normaliseSource.c_str());
   if (!normalise)
   {
     vtkErrorMacro(<< "the splat normalisation shader did not compile");
     return;
   }
-  state->vtkglDisable(GL_BLEND);
+  if (radianceFromPass)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_ALWAYS);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  impl.WeightedColour->Activate();
-  impl.WeightedDepth->Activate();
-  normalise->SetUniformi("weightedColour", impl.WeightedColour->GetTextureUnit());
-  normalise->SetUniformi("weightedDepth", impl.WeightedDepth->GetTextureUnit());
+  vtkTextureObject* inputs[4] = { impl.WeightedColour, impl.WeightedDepth, impl.WeightedNormal,
+    impl.SplatDepth };
+  const char* names[4] = { "weightedColour", "weightedDepth", "weightedNormal", "splatDepth" };
+  for (int k = 0; k < 4; ++k)
+  {
+    inputs[k]->Activate();
+    normalise->SetUniformi(names[k], inputs[k]->GetTextureUnit());
+  }
+  normalise->SetUniformi("translucentPixels", radianceFromPass ? 1 : 0);
+  vtkProperty* property = act->GetProperty();
+  const float look[3] = { static_cast<float>(property->GetAmbient()),
+    static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
+  normalise->SetUniform3f("ambientDiffuse", look);
+  normalise->SetUniformi("orthographic", orthographic ? 1 : 0);
+  Eigen::Matrix4f clipToView = viewToClip.inverse();
+  normalise->SetUniformMatrix4x4("clipToView", clipToView.data());
+  for (vtkOpenGLRenderPass* pass : passes)
+  {
+    pass->SetShaderParameters(normalise, this, act, nullptr);  // eta, for Ft
+  }
   impl.Normalise->Render();
-  impl.WeightedColour->Deactivate();
-  impl.WeightedDepth->Deactivate();
+  for (vtkTextureObject* t : inputs)
+  {
+    t->Deactivate();
+  }
 }
 
 void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)

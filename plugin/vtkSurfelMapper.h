@@ -8,12 +8,14 @@
  * surface (a measured coverage target, see SetCoverageTarget), one per point where the density
  * varies. By default overlapping discs are blended (Botsch and Kobbelt's splatting): a
  * visibility pass keeps the depth of the front surface, pushed back by a fraction of the
- * radius; an accumulation pass adds every disc within that offset, weighted by a Gaussian of
- * the distance to its centre; a normalisation pass divides by the weights and writes colour
- * and depth, so opaque actors in the same renderer stay in front or behind as they should.
- * SetSplattingToDiscs draws hard discs with a depth test instead. On its own the mapper shades discs with a two-sided
- * Lambert term under a headlight, using point colours (ScalarVisibility) or the actor's
- * colour. With a vtkTranslucentMaterial on the actor and a vtkSubsurfacePass in the renderer,
+ * radius; an accumulation pass adds the colour, depth and normal of every disc within that
+ * offset, weighted by a Gaussian of the distance to its centre, and each pixel's largest
+ * coverage by a disc; a normalisation pass divides by the weights, shades with the blended
+ * normal and writes colour and depth, so opaque actors in the same renderer stay in front or
+ * behind as they should. Plain silhouettes fade over a pixel by that coverage.
+ * SetSplattingToDiscs draws hard discs with a depth test instead. On its own the mapper shades
+ * discs with a two-sided Lambert term under a headlight, using point colours
+ * (ScalarVisibility) or the actor's colour. With a vtkTranslucentMaterial on the actor and a vtkSubsurfacePass in the renderer,
  * the pass supplies each surfel's radiance instead (it follows vtkOpenGLRenderPass's shader
  * replacement protocol). Cells are ignored: every point is a surfel.
  *

@@ -14,6 +14,7 @@ uniform vec3 ambientDiffuse;  // ambient, diffuse, opacity of the plain (non-tra
 uniform float radiusVC;       // the uniform disc radius in view units
 uniform bool perPointRadius;
 uniform float modelToViewScale;
+uniform bool viewFactorPerPixel;  // blended splats: the view factor from the blended normal
 
 out vec3 centreVC_gs;
 out vec3 normalVC_gs;
@@ -32,11 +33,12 @@ void main()
   normalVC_gs = normalize(normalToView * normalMC);
   vec3 towardsViewer = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-centre.xyz);
   float cosOut = abs(dot(normalVC_gs, towardsViewer));
-  // plain look: Lambert under a headlight, two-sided
-  vec4 colour = vec4(colourMC.rgb * (ambientDiffuse.x + ambientDiffuse.y * cosOut),
-                     colourMC.a * ambientDiffuse.z);
+  // The surfel's colour and the factor the view direction puts on it: for the plain look,
+  // Lambert under a headlight, two-sided; the subsurface pass's hook replaces both.
+  vec4 colour = vec4(colourMC.rgb, colourMC.a * ambientDiffuse.z);
+  vec3 viewFactor = vec3(ambientDiffuse.x + ambientDiffuse.y * cosOut);
   //SSS::Radiance::Impl
-  colour_gs = colour;
+  colour_gs = viewFactorPerPixel ? colour : vec4(colour.rgb * viewFactor, colour.a);
   curvature_gs = 0.0;
   //SSS::Shape::Impl
 }

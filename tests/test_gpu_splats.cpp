@@ -1,6 +1,7 @@
 // The view of the surfel mapper on its own (plain look, EGL): radii from measured coverage close
 // randomly sampled and range-thinned surfaces, blended splats are as smooth as a mesh of the
-// same surface, and opaque actors stay in front or behind as their depth says.
+// same surface with silhouettes antialiased, and opaque actors stay in front or behind as their
+// depth says.
 #include <gtest/gtest.h>
 
 #include <vtkActor.h>
@@ -269,6 +270,69 @@ TEST(GpuSplats, BlendedSpheresAreAsSmoothAsTheMesh) {
       EXPECT_FALSE(smooth);  // hard discs show their grain: the measure sees it
     }
   }
+}
+
+// A white sphere of splats, unshaded, on black: a pixel's grey level is the share of it the
+// splats cover. Along the silhouette, against the same splats drawn at 4 x 4 times the pixels
+// and averaged down (what a box filter of their outline gives), blended splats fade their
+// rims over a pixel; hard discs cover a pixel or not, about a quarter off on average wherever
+// an edge crosses at a random place.
+std::vector<double> white_sphere_coverage(int splatting, int size) {
+  vtkNew<vtkEGLSurfacelessRenderWindow> window;
+  vtkNew<vtkRenderer> renderer;
+  window->SetSize(size, size);
+  window->SetMultiSamples(0);  // the splats' own edges, not the window's multisampling
+  window->AddRenderer(renderer);
+  renderer->SetBackground(0, 0, 0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetPosition(0, 0, 10);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetParallelScale(1.2);
+  vtkSurfelMapper* mapper = nullptr;
+  vtkSmartPointer<vtkActor> actor = surfel_actor(random_sphere(16000, 5, true), &mapper);
+  actor->GetProperty()->SetAmbient(1.0);
+  actor->GetProperty()->SetDiffuse(0.0);
+  mapper->SetSplatting(splatting);
+  renderer->AddActor(actor);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto* scalars = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  std::vector<double> grey(static_cast<std::size_t>(size) * size);
+  for (std::size_t p = 0; p < grey.size(); ++p) grey[p] = scalars->GetValue(3 * p) / 255.0;
+  return grey;
+}
+
+TEST(GpuSplats, SilhouettesAreAntialiased) {
+  double error[2] = {0.0, 0.0};
+  for (int splatting : {vtkSurfelMapper::BLENDED, vtkSurfelMapper::DISCS}) {
+    const std::vector<double> image = white_sphere_coverage(splatting, kSize);
+    const std::vector<double> fine = white_sphere_coverage(splatting, 4 * kSize);
+    double sum = 0.0;
+    int edge = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        double box = 0.0;
+        for (int sy = 0; sy < 4; ++sy)
+          for (int sx = 0; sx < 4; ++sx) box += fine[(4 * y + sy) * 4 * kSize + 4 * x + sx] / 16.0;
+        if (box > 0.0 && box < 1.0) {
+          sum += std::abs(image[y * kSize + x] - box);
+          ++edge;
+        }
+      }
+    const int k = splatting == vtkSurfelMapper::BLENDED ? 0 : 1;
+    error[k] = sum / edge;
+    std::printf("16000 random points, %s: silhouette coverage off the 4 x 4 box filter by %.3f "
+                "on average over %d edge pixels\n",
+                splatting == vtkSurfelMapper::BLENDED ? "Blended" : "Discs", error[k], edge);
+  }
+  EXPECT_LT(error[0], 0.1);
+  EXPECT_GT(error[1], 0.2);  // the measure sees hard edges
 }
 
 TEST(GpuSplats, OpaqueActorsKeepTheirDepthOrder) {
