@@ -3,9 +3,10 @@
 // accumulation pass (surfel_fs.glsl) over their weight, and the view factor from the blended
 // normal: for the plain look, Lambert under a headlight; for translucent surfels (alpha 2,
 // B from the subsurface pass), Ft(eta, wo) of eq. 14. Plain pixels the splats cover in part
-// (a silhouette) are blended over the scene by their coverage; translucent ones are drawn
-// where the discs cover at least half the pixel, since the composite tone maps them alone.
-// Pixels no splat reached are left as they were. Needs dipole.glsl.
+// (a silhouette) are blended over the scene by their coverage. Translucent ones hold linear
+// radiance the pass's composite tone maps, so they carry their coverage instead, as alpha
+// 3 - coverage (composite_fs.glsl fades them into their neighbours). Pixels no splat reached
+// are left as they were. Needs dipole.glsl.
 
 in vec2 texCoord;
 uniform sampler2D weightedColour;  // sum of w rgba
@@ -32,7 +33,7 @@ void main()
   bool translucent = base.a > 1.5;
   vec4 normal = texture(weightedNormal, texCoord);
   float coverage = min(normal.w, 1.0);
-  if (translucent != translucentPixels || (translucent && coverage < 0.5))
+  if (translucent != translucentPixels || coverage <= 0.0)
   {
     discard;
   }
@@ -48,7 +49,7 @@ void main()
   float cosOut = length_n > 0.0 ? abs(dot(n / length_n, towardsViewer)) : 1.0;
   if (translucent)
   {
-    gl_FragData[0] = vec4(fresnelTransmittanceRGB(cosOut) * base.rgb, 2.0);
+    gl_FragData[0] = vec4(fresnelTransmittanceRGB(cosOut) * base.rgb, 3.0 - coverage);
   }
   else
   {
