@@ -74,6 +74,27 @@ void PrintTo(const Scaled& s, std::ostream* os) {
   *os << s.material << " at " << s.mm_per_unit << " mm per unit";
 }
 
+// The GPU's B and the reference's (cached) at `count` points of `sphere` lit along +z.
+struct AgainstReference {
+  std::vector<std::size_t> receivers;
+  std::vector<Rgb> B, reference;
+  ErrorStats error;
+};
+
+AgainstReference gpu_against_reference(const SurfelCloud& sphere, const Material& material,
+                                       std::size_t count, unsigned seed) {
+  AgainstReference r;
+  ReferenceSettings settings;
+  settings.receivers = r.receivers = sample_of(sphere, count, seed);
+  r.reference = cached_reference(SSS_TEST_REFERENCE_CACHE, sphere, material, {{kAlongZ, 1.0}},
+                                 settings).B;
+  GpuScene scene(sphere, material, {{kAlongZ, 1.0}});
+  r.B = scene.render_B();
+  if (r.B.size() == sphere.size())
+    r.error = compare_radiance(at(r.B, r.receivers), at(r.reference, r.receivers));
+  return r;
+}
+
 class GpuSphereAgainstReference : public ::testing::TestWithParam<Scaled> {};
 
 TEST_P(GpuSphereAgainstReference, SamePointsAtAnotherScale) {
@@ -81,20 +102,15 @@ TEST_P(GpuSphereAgainstReference, SamePointsAtAnotherScale) {
     GTEST_SKIP() << "a long case on llvmpipe; set SSS_LONG_TESTS=1 to run it";
   const Material material = Material::preset(GetParam().material, 1.3, GetParam().mm_per_unit);
   const SurfelCloud& sphere = lattice();
-  ReferenceSettings settings;
-  settings.receivers = sample_of(sphere, 2000, 11);
-  const SurfelRadiance reference =
-      cached_reference(SSS_TEST_REFERENCE_CACHE, sphere, material, {{kAlongZ, 1.0}}, settings);
-  GpuScene scene(sphere, material, {{kAlongZ, 1.0}});
-  const std::vector<Rgb> B = scene.render_B();
-  ASSERT_EQ(B.size(), sphere.size());
-  const ErrorStats e = compare_radiance(at(B, settings.receivers), at(reference.B, settings.receivers));
+  const AgainstReference r = gpu_against_reference(sphere, material, 2000, 11);
+  ASSERT_EQ(r.B.size(), sphere.size());
+  const ErrorStats& e = r.error;
   // Per channel, summed B over summed reference B: a bias that dark points cannot swamp.
   double sums[2][3] = {{0, 0, 0}, {0, 0, 0}};
-  for (std::size_t i : settings.receivers)
+  for (std::size_t i : r.receivers)
     for (int c = 0; c < 3; ++c) {
-      sums[0][c] += B[i][c];
-      sums[1][c] += reference.B[i][c];
+      sums[0][c] += r.B[i][c];
+      sums[1][c] += r.reference[i][c];
     }
   double bias[3];
   for (int c = 0; c < 3; ++c) bias[c] = 100.0 * (sums[0][c] / sums[1][c] - 1.0);
@@ -123,15 +139,10 @@ INSTANTIATE_TEST_SUITE_P(
 // every channel, while 8,000 points (one smaller root) were exact.
 TEST(GpuSphereWalk, AWalkThroughAWholeRootIsNotCutShort) {
   const SurfelCloud sphere = make_fibonacci_sphere(5000.0, 32000);
-  const Material material = Material::preset("ketchup", 1.3, 0.0004);
-  ReferenceSettings settings;
-  settings.receivers = sample_of(sphere, 400, 5);
-  const SurfelRadiance reference =
-      cached_reference(SSS_TEST_REFERENCE_CACHE, sphere, material, {{kAlongZ, 1.0}}, settings);
-  GpuScene scene(sphere, material, {{kAlongZ, 1.0}});
-  const std::vector<Rgb> B = scene.render_B();
-  ASSERT_EQ(B.size(), sphere.size());
-  const ErrorStats e = compare_radiance(at(B, settings.receivers), at(reference.B, settings.receivers));
+  const AgainstReference r =
+      gpu_against_reference(sphere, Material::preset("ketchup", 1.3, 0.0004), 400, 5);
+  ASSERT_EQ(r.B.size(), sphere.size());
+  const ErrorStats& e = r.error;
   std::printf("[ gpu sphere ] ketchup, R 2 mm, 32,000 points: against the reference %s\n",
               e.summary().c_str());
   EXPECT_LT(e.mean, 0.01);
