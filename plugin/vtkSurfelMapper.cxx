@@ -54,15 +54,14 @@ struct vtkSurfelMapper::Internals
 
   // Blended splatting: the scene's depth with the splats' pushed back, and the weighted sums.
   vtkNew<vtkOpenGLFramebufferObject> SplatBuffer;
-  vtkSmartPointer<vtkTextureObject> SplatDepth, WeightedColour, WeightedDepth, WeightedNormal;
+  vtkSmartPointer<vtkTextureObject> SplatDepth, WeightedColour, WeightedNormal;
   int SplatDepthFormat = -1;
   bool WarnedBlit = false;
   std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
 
   void ReleaseSplatBuffers(vtkWindow* window)
   {
-    for (auto* t :
-      { &this->SplatDepth, &this->WeightedColour, &this->WeightedDepth, &this->WeightedNormal })
+    for (auto* t : { &this->SplatDepth, &this->WeightedColour, &this->WeightedNormal })
     {
       if (*t)
       {
@@ -424,16 +423,14 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       impl.SplatDepth->AllocateDepth(w, h, depthFormat);
       impl.SplatDepthFormat = depthFormat;
       impl.WeightedColour = sss::float_texture_2d(renWin, w, h);
-      impl.WeightedDepth = sss::float_texture_2d(renWin, w, h, 2);
       impl.WeightedNormal = sss::float_texture_2d(renWin, w, h);
     }
     impl.SplatBuffer->SetContext(renWin);
     impl.SplatBuffer->Bind();
     impl.SplatBuffer->AddColorAttachment(0, impl.WeightedColour);
-    impl.SplatBuffer->AddColorAttachment(1, impl.WeightedDepth);
-    impl.SplatBuffer->AddColorAttachment(2, impl.WeightedNormal);
+    impl.SplatBuffer->AddColorAttachment(1, impl.WeightedNormal);
     impl.SplatBuffer->AddDepthAttachment(impl.SplatDepth);
-    impl.SplatBuffer->ActivateDrawBuffers(3);
+    impl.SplatBuffer->ActivateDrawBuffers(2);
     state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(drawn));
     while (glGetError() != GL_NO_ERROR)
     {
@@ -442,7 +439,7 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     if (glGetError() != GL_NO_ERROR)
     {
-      impl.SplatBuffer->RemoveColorAttachments(3);
+      impl.SplatBuffer->RemoveColorAttachments(2);
       impl.SplatBuffer->RemoveDepthAttachment();
       state->PopFramebufferBindings();
       if (!impl.WarnedBlit)
@@ -474,14 +471,14 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     const bool perBufferBlend = GLEW_VERSION_4_0 || GLEW_ARB_draw_buffers_blend;
     if (perBufferBlend)
     {
-      glBlendEquationSeparatei(2, GL_FUNC_ADD, GL_MAX);
+      glBlendEquationSeparatei(1, GL_FUNC_ADD, GL_MAX);
     }
     drawnAll = drawnAll && draw(2);  // accumulation of every disc within the offset
     if (perBufferBlend)
     {
-      glBlendEquationSeparatei(2, GL_FUNC_ADD, GL_FUNC_ADD);
+      glBlendEquationSeparatei(1, GL_FUNC_ADD, GL_FUNC_ADD);
     }
-    impl.SplatBuffer->RemoveColorAttachments(3);
+    impl.SplatBuffer->RemoveColorAttachments(2);
     impl.SplatBuffer->RemoveDepthAttachment();
     state->PopFramebufferBindings();
     if (!drawnAll)
@@ -512,15 +509,14 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   state->vtkglDepthFunc(GL_ALWAYS);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  vtkTextureObject* inputs[4] = { impl.WeightedColour, impl.WeightedDepth, impl.WeightedNormal,
-    impl.SplatDepth };
-  const char* names[4] = { "weightedColour", "weightedDepth", "weightedNormal", "splatDepth" };
-  for (int k = 0; k < 4; ++k)
+  vtkTextureObject* inputs[3] = { impl.WeightedColour, impl.WeightedNormal, impl.SplatDepth };
+  const char* names[3] = { "weightedColour", "weightedNormal", "splatDepth" };
+  for (int k = 0; k < 3; ++k)
   {
     inputs[k]->Activate();
     normalise->SetUniformi(names[k], inputs[k]->GetTextureUnit());
   }
-  normalise->SetUniformi("translucentPixels", radianceFromPass ? 1 : 0);
+  normalise->SetUniformi("translucent", radianceFromPass ? 1 : 0);
   vtkProperty* property = act->GetProperty();
   const float look[3] = { static_cast<float>(property->GetAmbient()),
     static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
@@ -528,6 +524,9 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   normalise->SetUniformi("orthographic", orthographic ? 1 : 0);
   Eigen::Matrix4f clipToView = viewToClip.inverse();
   normalise->SetUniformMatrix4x4("clipToView", clipToView.data());
+  normalise->SetUniformMatrix4x4("viewToClip", const_cast<float*>(viewToClip.data()));
+  normalise->SetUniformf(
+    "blendDepthVC", static_cast<float>(this->BlendDepth * prepared.view_radius * scale));
   for (vtkOpenGLRenderPass* pass : passes)
   {
     pass->SetShaderParameters(normalise, this, act, nullptr);  // eta, for Ft

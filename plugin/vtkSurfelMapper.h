@@ -8,10 +8,10 @@
  * surface (a measured coverage target, see SetCoverageTarget), one per point where the density
  * varies. By default overlapping discs are blended (Botsch and Kobbelt's splatting): a
  * visibility pass keeps the depth of the front surface, pushed back by a fraction of the
- * radius; an accumulation pass adds the colour, depth and normal of every disc within that
- * offset, weighted by a Gaussian of the distance to its centre, and each pixel's largest
- * coverage by a disc; a normalisation pass divides by the weights, shades with the blended
- * normal and writes colour and depth, so opaque actors in the same renderer stay in front or
+ * radius; an accumulation pass adds the colour and normal of every disc within that offset,
+ * weighted by a Gaussian of the distance to its centre, and each pixel's largest coverage by
+ * a disc; a normalisation pass divides by the weights, shades with the blended normal and
+ * writes colour and the front surface's depth, so opaque actors in the same renderer stay in front or
  * behind as they should. Silhouettes fade over a pixel by that coverage (translucent ones in
  * vtkSubsurfacePass's composite).
  * SetSplattingToDiscs draws hard discs with a depth test instead. On its own the mapper shades

@@ -1,9 +1,10 @@
 //VTK::System::Dec
 // Camera view of a surfel, computed per surfel in surfel_vs.glsl. SPLAT_PASS (set by
 // vtkSurfelMapper) picks the pass: 0 a hard disc; 1 the visibility pass of blended splatting
-// (the depth alone, pushed back by surfel_gs.glsl); 2 the accumulation pass: colour, depth and
-// normal weighted by a Gaussian of the distance to the centre, and the pixel's coverage by
-// the disc (surfel_normalise_fs.glsl divides by the weights and shades with the normal).
+// (the depth alone, pushed back by surfel_gs.glsl); 2 the accumulation pass: colour and
+// normal weighted by a Gaussian of the distance to the centre, the weight, and the pixel's
+// coverage by the disc (surfel_normalise_fs.glsl divides by the weights and shades with the
+// normal).
 //SSS::Splat::Dec
 
 in vec2 discCoord;
@@ -32,9 +33,8 @@ void main()
   float w = exp(-2.0 * r2);  // e^-2 at the rim
   vec3 towardsViewer = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-pointVC);
   vec3 n = dot(normalVC, towardsViewer) < 0.0 ? -normalVC : normalVC;  // shading is two-sided
-  gl_FragData[0] = w * colour;
-  gl_FragData[1] = vec4(w, w * gl_FragCoord.z, 0.0, 0.0);
-  gl_FragData[2] = vec4(w * n, coverage);  // alpha blended by its maximum (vtkSurfelMapper)
+  gl_FragData[0] = vec4(w * colour.rgb, w);
+  gl_FragData[1] = vec4(w * n, coverage);  // alpha blended by its maximum (vtkSurfelMapper)
 #else
   if (r2 > 1.0)
   {
