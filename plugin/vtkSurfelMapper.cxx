@@ -296,6 +296,10 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
                     : 2.0 * std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0)) / height
     : 0.0;
   bool radianceFromPass = false;  // a pass (the subsurface pass) gives this actor's colour
+  vtkProperty* property = act->GetProperty();
+  const float look[3] = { static_cast<float>(property->GetAmbient()),
+    static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
+  const float blendDepthVC = static_cast<float>(this->BlendDepth * prepared.view_radius * scale);
 
   // One surfel draw: SPLAT_PASS 0 hard discs, 1 visibility, 2 accumulation (surfel_fs.glsl).
   auto draw = [&](int splatPass) -> bool
@@ -347,14 +351,10 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     program->SetUniformf("radiusVC", static_cast<float>(prepared.view_radius * scale));
     program->SetUniformi("perPointRadius", perPoint ? 1 : 0);
     program->SetUniformf("modelToViewScale", static_cast<float>(scale));
-    program->SetUniformf(
-      "blendDepthVC", static_cast<float>(this->BlendDepth * prepared.view_radius * scale));
+    program->SetUniformf("blendDepthVC", blendDepthVC);
     program->SetUniformi("orthographic", orthographic ? 1 : 0);
     program->SetUniformf("pixelSpanVC", static_cast<float>(pixelSpan));
     program->SetUniformi("viewFactorPerPixel", splatPass == 2 ? 1 : 0);
-    vtkProperty* property = act->GetProperty();
-    const float look[3] = { static_cast<float>(property->GetAmbient()),
-      static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
     program->SetUniform3f("ambientDiffuse", look);
     for (vtkOpenGLRenderPass* pass : passes)
     {
@@ -488,8 +488,12 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   }
   // Normalisation into the renderer's framebuffer, colour and depth (surfel_normalise_fs.glsl):
   // a translucent actor's pixels as they are, a plain one's blended by their coverage.
-  std::string normaliseSource = sss_surfel_normalise_fs;
-  vtkShaderProgram::Substitute(normaliseSource, "//SSS::Dipole::Dec", sss_dipole, true);
+  static const std::string normaliseSource = []
+  {
+    std::string source = sss_surfel_normalise_fs;
+    vtkShaderProgram::Substitute(source, "//SSS::Dipole::Dec", sss_dipole, true);
+    return source;
+  }();
   vtkShaderProgram* normalise = sss::ready_quad(impl.Normalise, renWin, normaliseSource.c_str());
   if (!normalise)
   {
@@ -517,16 +521,12 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     normalise->SetUniformi(names[k], inputs[k]->GetTextureUnit());
   }
   normalise->SetUniformi("translucent", radianceFromPass ? 1 : 0);
-  vtkProperty* property = act->GetProperty();
-  const float look[3] = { static_cast<float>(property->GetAmbient()),
-    static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
   normalise->SetUniform3f("ambientDiffuse", look);
   normalise->SetUniformi("orthographic", orthographic ? 1 : 0);
   Eigen::Matrix4f clipToView = viewToClip.inverse();
   normalise->SetUniformMatrix4x4("clipToView", clipToView.data());
   normalise->SetUniformMatrix4x4("viewToClip", const_cast<float*>(viewToClip.data()));
-  normalise->SetUniformf(
-    "blendDepthVC", static_cast<float>(this->BlendDepth * prepared.view_radius * scale));
+  normalise->SetUniformf("blendDepthVC", blendDepthVC);
   for (vtkOpenGLRenderPass* pass : passes)
   {
     pass->SetShaderParameters(normalise, this, act, nullptr);  // eta, for Ft

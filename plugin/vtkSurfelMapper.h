@@ -11,12 +11,12 @@
  * radius; an accumulation pass adds the colour and normal of every disc within that offset,
  * weighted by a Gaussian of the distance to its centre, and each pixel's largest coverage by
  * a disc; a normalisation pass divides by the weights, shades with the blended normal and
- * writes colour and the front surface's depth, so opaque actors in the same renderer stay in front or
- * behind as they should. Silhouettes fade over a pixel by that coverage (translucent ones in
- * vtkSubsurfacePass's composite).
- * SetSplattingToDiscs draws hard discs with a depth test instead. On its own the mapper shades
- * discs with a two-sided Lambert term under a headlight, using point colours
- * (ScalarVisibility) or the actor's colour. With a vtkTranslucentMaterial on the actor and a vtkSubsurfacePass in the renderer,
+ * writes colour and the front surface's depth, so opaque actors in the same renderer stay in
+ * front or behind as they should. Silhouettes fade over a pixel by that coverage (translucent
+ * ones in vtkSubsurfacePass's composite). SetSplattingToDiscs draws hard discs with a depth
+ * test instead. On its own the mapper shades discs with a two-sided Lambert term under a
+ * headlight, using point colours (ScalarVisibility) or the actor's colour. With a
+ * vtkTranslucentMaterial on the actor and a vtkSubsurfacePass in the renderer,
  * the pass supplies each surfel's radiance instead (it follows vtkOpenGLRenderPass's shader
  * replacement protocol). Cells are ignored: every point is a surfel.
  *
