@@ -1,8 +1,12 @@
 #include "sssGpuHelpers.h"
 
+#include "sss_dipole.h"
+
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -37,6 +41,46 @@ vtkShaderProgram* ready_quad(
     window->GetShaderCache()->ReadyShaderProgram(quad->Program);
   }
   return quad->Program;
+}
+
+std::string shader_with_pieces(std::string source, const std::string& gather)
+{
+  vtkShaderProgram::Substitute(source, "//SSS::Gather::Dec", gather, true);
+  vtkShaderProgram::Substitute(source, "//SSS::Dipole::Dec", sss_dipole, true);
+  vtkShaderProgram::Substitute(source, "SSS_MAX_LIGHTS", std::to_string(kMaxLights), true);
+  vtkShaderProgram::Substitute(source, "SSS_MAX_LEVELS", std::to_string(kMaxLevels), true);
+  return source;
+}
+
+void finish_if(bool finish)
+{
+  if (finish)
+  {
+    glFinish();
+  }
+}
+
+void ProgramVAO::bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name,
+  vtkOpenGLBufferObject* buffer2, const char* name2)
+{
+  vao->Bind();
+  if (needs(p))
+  {
+    vao->ReleaseGraphicsResources();
+    vao->Bind();
+    vao->AddAttributeArray(p, buffer, name, 0, 12, VTK_FLOAT, 3, false);
+    if (buffer2)
+    {
+      vao->AddAttributeArray(p, buffer2, name2, 0, 8, VTK_FLOAT, 2, false);
+    }
+    program = p;
+  }
+}
+
+void ProgramVAO::release()
+{
+  vao->ReleaseGraphicsResources();
+  program = nullptr;
 }
 
 PointPassState::PointPassState(vtkOpenGLState* state)

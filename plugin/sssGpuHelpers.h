@@ -1,12 +1,16 @@
-// Small GL helpers shared by the subsurface pass and its per-actor state.
+// Small GL helpers shared by the subsurface pass and the rooms of its steps.
 #ifndef sssGpuHelpers_h
 #define sssGpuHelpers_h
 
+#include "vtkNew.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkSmartPointer.h"
 
 #include <memory>
+#include <string>
 
+class vtkOpenGLBufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -17,6 +21,7 @@ namespace sss
 
 constexpr int kMaxLights = 4;   // lights that light translucent actors
 constexpr int kMaxLevels = 15;  // pyramid levels per light (maps or surfel lists of 2^14)
+constexpr int kListWidth = 256;  // of list textures: squarish keeps the rasteriser's tiles busy
 
 // An RGBA32F (or, with 2 components, RG32F) texture with nearest filtering, clamped at the
 // edges.
@@ -27,6 +32,26 @@ vtkSmartPointer<vtkTextureObject> float_texture_2d(
 // compile.
 vtkShaderProgram* ready_quad(
   std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fs);
+
+// `source` with its hooks filled: //SSS::Gather::Dec by `gather`, //SSS::Dipole::Dec by
+// dipole.glsl, and the SSS_MAX_LIGHTS and SSS_MAX_LEVELS constants.
+std::string shader_with_pieces(std::string source, const std::string& gather);
+
+// Waits for the GPU when `finish` is set, so that a step's reported time is real.
+void finish_if(bool finish);
+
+// A VAO bound to one program's attribute locations, rebuilt when the program changes.
+struct ProgramVAO
+{
+  vtkNew<vtkOpenGLVertexArrayObject> vao;
+  vtkShaderProgram* program = nullptr;
+  bool needs(vtkShaderProgram* p) const { return p != program; }
+  // Binds the VAO with one vec3 attribute and, if given, one vec2 attribute, re-linked when
+  // the program changed.
+  void bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name,
+    vtkOpenGLBufferObject* buffer2 = nullptr, const char* name2 = nullptr);
+  void release();
+};
 
 // GL state of the passes that draw one GL point per output texel: no scissor, depth test or
 // blending, point size from the shader, own viewport. Restores all of it on destruction.

@@ -14,6 +14,7 @@
 
 #include "fresnel.h"
 #include "local_surface.h"
+#include "morton_order.h"
 #include "near_field.h"
 #include "stopwatch.h"
 #include "surfel_cells.h"
@@ -31,7 +32,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace sss
 {
@@ -48,22 +48,6 @@ struct Rect
 {
   int x, y, width, height;
 };
-
-// 30-bit Morton code of a point quantised to 1024 cells per axis over the cube `lo`, `edge`.
-std::uint32_t MortonCode3(const Eigen::Vector3d& p, const Eigen::Vector3d& lo, double edge)
-{
-  std::uint32_t code = 0;
-  for (int a = 0; a < 3; ++a)
-  {
-    const double t = edge > 0.0 ? (p[a] - lo[a]) / edge : 0.0;
-    const std::uint32_t q = static_cast<std::uint32_t>(std::clamp(t * 1024.0, 0.0, 1023.0));
-    for (int b = 0; b < 10; ++b)
-    {
-      code |= ((q >> b) & 1u) << (3 * b + a);
-    }
-  }
-  return code;
-}
 
 int CeilLog2(std::size_t n)
 {
@@ -116,14 +100,6 @@ void SetFloat3Array(vtkShaderProgram* program, const char* name, const std::vect
     }
   }
   program->SetUniform3fv(name, kMaxLights, f.data());
-}
-
-std::string Pieces(std::string source, const std::string& gather)
-{
-  vtkShaderProgram::Substitute(source, "//SSS::Gather::Dec", gather, true);
-  vtkShaderProgram::Substitute(source, "SSS_MAX_LIGHTS", std::to_string(kMaxLights), true);
-  vtkShaderProgram::Substitute(source, "SSS_MAX_LEVELS", std::to_string(kMaxLevels), true);
-  return source;
 }
 
 void Barrier()
@@ -358,19 +334,7 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
   const std::vector<double>& area = cells.area;
 
   // The surfel list: Morton order of position, laid out in 2-D Morton order.
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  {
-    const Eigen::Vector3d lo = local.bounds.min;
-    const double edge = local.bounds.extent().maxCoeff();
-    std::vector<std::uint32_t> code(n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      code[i] = MortonCode3(local.positions[i], lo, edge);
-    }
-    std::stable_sort(
-      order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return code[a] < code[b]; });
-  }
+  const std::vector<std::size_t> order = morton_order(local.positions);
   const int bits = CeilLog2(std::max<std::size_t>(n, 1));
   g.xbits = (bits + 1) / 2;
   g.ybits = bits - g.xbits;
@@ -470,7 +434,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
 
   // Each light: the cells' irradiance and the finest level of its source pyramid, then the
   // coarser levels.
-  const std::string irradiance_fs = Pieces(sss_surfel_irradiance_fs,
+  const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs,
     std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table);
   vtkShaderProgram* irradiance = ready_quad(g.irradiance_quad, window, irradiance_fs.c_str());
   vtkShaderProgram* reduce = irradiance ? ready_quad(g.reduce_quad, window, sss_pyramid_reduce_fs) : nullptr;
@@ -568,7 +532,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   report.seconds_cells = clock.lap();
 
   // B at every surfel: the near field's table, and the far field's walk.
-  const std::string gather_fs = Pieces(sss_near_field_fs,
+  const std::string gather_fs = shader_with_pieces(sss_near_field_fs,
     std::string(sss_surfel_list) + "uniform int lightCount;\n" + sss_dipole + sss_near_field +
       sss_far_field);
   vtkShaderProgram* gather = ready_quad(g.gather_quad, window, gather_fs.c_str());

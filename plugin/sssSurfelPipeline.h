@@ -10,6 +10,7 @@
 #include "local_surfels.h"
 #include "material.h"
 #include "near_far_split.h"
+#include "sssLightMaps.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -30,22 +31,6 @@ class vtkWindow;
 
 namespace sss
 {
-
-// What step 1 hands to step 2: the light maps (one atlas) and their lights.
-struct LightMapAtlas
-{
-  vtkTextureObject* surfel = nullptr;  // the seen surfel's list texel; x < 0: none
-  struct Map
-  {
-    int x = 0, y = 0, width = 0, height = 0;  // where it lies in the atlas
-    double texel = 0;                         // mm
-    Eigen::Vector3d u, v;                     // image axes, local frame
-    Eigen::Vector2d corner;                   // plane coordinates of its lower-left corner
-    Eigen::Vector3d towards_light;            // unit
-    Rgb irradiance{};
-  };
-  std::vector<Map> maps;
-};
 
 // Filled from vtkSubsurfacePass's settings, where their defaults are.
 struct SurfelPipelineSettings

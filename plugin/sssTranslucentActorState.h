@@ -1,11 +1,13 @@
-// GPU state of one translucent actor in a vtkSubsurfacePass: the light maps (step 1), step 2
-// (the surfel pipeline, or the paper's virtual points) and each surfel's B in input order for
-// the camera view (step 3), rebuilt only when what they depend on changed.
+// One translucent actor in a vtkSubsurfacePass: which steps its changed inputs call for, and
+// their order. The steps live in their own rooms: the light maps (step 1, sssLightMaps), step 2
+// (sssSurfelPipeline, or the paper's sssPaperVirtualPoints) and the hand-over of each surfel's
+// B to the camera view (sssSurfelResolve).
 #ifndef sssTranslucentActorState_h
 #define sssTranslucentActorState_h
 
 #include "dipole.h"
 #include "material.h"
+#include "sssLightMaps.h"
 #include "sssSurfelPipeline.h"
 #include "sssSurfelPreparation.h"
 
@@ -53,16 +55,6 @@ struct GpuSettings
   }
 };
 
-struct GpuLight
-{
-  Eigen::Vector3d towards_light;  // local frame, unit
-  Rgb irradiance;
-  bool operator==(const GpuLight& o) const
-  {
-    return towards_light == o.towards_light && irradiance == o.irradiance;
-  }
-};
-
 struct StepReport
 {
   bool bake = false, illumination = false, surfels = false;
@@ -73,8 +65,6 @@ struct StepReport
   double texel_mm = 0, grid_spacing_mm = 0;
   double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
 };
-
-struct ReceiverList;
 
 class TranslucentActorState
 {
@@ -91,7 +81,7 @@ public:
 
   // The per-surfel B texture (RGBA32F, surfel i at texel (i % width, i / width)).
   vtkTextureObject* surfel_radiance() const;
-  int list_width() const { return list_width_; }
+  int list_width() const;
   const Material& material() const { return material_; }
 
   // Shows B given per surfel (e.g. the CPU reference's) instead of running steps 1-2.
@@ -105,14 +95,9 @@ public:
 
 private:
   struct Gpu;
-  bool upload_geometry(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
+  // The bake: what changes with the geometry, the material or a setting.
+  bool bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
     bool albedo_from_colour, const GpuSettings& settings, StepReport& report, std::string& error);
-  bool run_illumination(vtkOpenGLRenderWindow* window, const std::vector<GpuLight>& lights,
-    const GpuSettings& settings, bool albedo_from_colour, StepReport& report, std::string& error);
-  // The paper's taps at the virtual points, into their 3-D texture.
-  bool run_paper_taps(vtkOpenGLRenderWindow* window, std::string& error);
-  // Each surfel's B into the input-order list: from the surfel pipeline or the 3-D texture.
-  bool resolve(vtkOpenGLRenderWindow* window, const GpuSettings& settings, std::string& error);
 
   Gpu* gpu_;
   Material material_;
@@ -121,9 +106,7 @@ private:
   GpuSettings geometry_settings_;
   bool geometry_albedo_ = false;
   std::vector<GpuLight> lights_;
-  GpuSettings settings_;
   bool valid_ = false;
-  int list_width_ = 1;
 };
 
 }

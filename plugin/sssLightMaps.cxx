@@ -1,0 +1,281 @@
+#include "sssLightMaps.h"
+
+#include "sssPaperTaps.h"
+#include "sssSurfelBuffers.h"
+#include "sss_illumination_fs.h"
+#include "sss_light_map_surfel_fs.h"
+#include "sss_surfel_gs.h"
+#include "sss_surfel_vs.h"
+
+#include "local_surfels.h"
+
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <sstream>
+
+namespace sss
+{
+
+LightMapAtlas LightMaps::atlas() const
+{
+  LightMapAtlas a;
+  a.surfel = surfel_;
+  for (std::size_t l = 0; l < maps_.size(); ++l)
+  {
+    LightMapAtlas::Map m;
+    m.x = map_x_[l];
+    m.y = 0;
+    m.width = maps_[l].width;
+    m.height = maps_[l].height;
+    m.texel = maps_[l].pixel;
+    m.u = maps_[l].u;
+    m.v = maps_[l].v;
+    m.corner = maps_[l].corner;
+    m.towards_light = lights_[l].towards_light;
+    m.irradiance = lights_[l].irradiance;
+    a.maps.push_back(m);
+  }
+  return a;
+}
+
+void LightMaps::release(vtkWindow* window)
+{
+  vao_.release();
+  for (auto* t : { &point_, &power_, &normal_, &surfel_, &depth_ })
+  {
+    if (*t)
+    {
+      (*t)->ReleaseGraphicsResources(window);
+      *t = nullptr;
+    }
+  }
+  fbo_->ReleaseGraphicsResources(window);
+  width_ = height_ = 0;
+}
+
+void LightMaps::allocate(vtkOpenGLRenderWindow* window, bool paper, int width, int height)
+{
+  // A moving light changes the maps' shapes every frame, and reallocating the textures each
+  // time costs more than unused texels.
+  const bool fits = width <= width_ && height <= height_;
+  const bool oversized = 4.0 * width * height < double(width_) * height_;
+  const bool other_kind = paper ? !point_ : !surfel_;
+  if (fits && !oversized && !other_kind)
+  {
+    return;
+  }
+  if (!oversized)
+  {
+    width = std::max(width, width_);
+    height = std::max(height, height_);
+  }
+  for (auto* t : { &point_, &power_, &normal_, &surfel_ })
+  {
+    if (*t)
+    {
+      (*t)->ReleaseGraphicsResources(window);
+      *t = nullptr;
+    }
+  }
+  if (paper)
+  {
+    point_ = float_texture_2d(window, width, height);
+    power_ = float_texture_2d(window, width, height);
+    normal_ = float_texture_2d(window, width, height);
+  }
+  else
+  {
+    surfel_ = float_texture_2d(window, width, height, 2);
+  }
+  depth_ = vtkSmartPointer<vtkTextureObject>::New();
+  depth_->SetContext(window);
+  depth_->AllocateDepth(width, height, vtkTextureObject::Float32);
+  width_ = width;
+  height_ = height;
+}
+
+bool LightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers,
+  const LocalSurfels& local, const std::vector<GpuLight>& lights, const LightMapRequest& request,
+  const Material& material, bool albedo_from_colour, LightMapReport& report, std::string& error)
+{
+  if (lights.size() > static_cast<std::size_t>(kMaxLights))
+  {
+    error = "at most " + std::to_string(kMaxLights) + " directional lights are supported";
+    return false;
+  }
+  const bool paper = request.paper;
+  // The paper's map is 512 texels a side; the surfel pipeline's texels are TexelPerRadius of
+  // a disc radius, at most MaxMapSize a side.
+  const double texel = paper ? 1e-9 : request.texel_per_radius * local.radius;
+  const int max_size = paper ? kPaperMapSize : request.max_map_size;
+  maps_.clear();
+  map_x_.clear();
+  lights_ = lights;
+  int atlas_w = 0, atlas_h = 1;
+  for (const GpuLight& light : lights)
+  {
+    const OrthoView map = OrthoView::fit_pixel(local.positions, local.max_disc_radius(),
+      light.towards_light, Eigen::Vector3d::UnitZ(), texel, max_size);
+    map_x_.push_back(atlas_w);
+    atlas_w += map.width;
+    atlas_h = std::max(atlas_h, map.height);
+    maps_.push_back(map);
+  }
+  atlas_w = std::max(atlas_w, 1);
+  int max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  if (atlas_w > max_texture || atlas_h > max_texture)
+  {
+    std::ostringstream msg;
+    msg << "the light maps need a " << atlas_w << " x " << atlas_h
+        << " texture, over this GL's limit of " << max_texture << "; lower MaxMapSize";
+    error = msg.str();
+    return false;
+  }
+  allocate(window, paper, atlas_w, atlas_h);
+  report.map_width = maps_.empty() ? 0 : maps_[0].width;
+  report.map_height = maps_.empty() ? 0 : maps_[0].height;
+  report.texel_mm = maps_.empty() ? 0.0 : maps_[0].pixel;
+
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable depth_test(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->PushFramebufferBindings();
+  fbo_->SetContext(window);
+  fbo_->Bind();
+  const int targets = paper ? 3 : 1;
+  if (paper)
+  {
+    fbo_->AddColorAttachment(0, point_);
+    fbo_->AddColorAttachment(1, power_);
+    fbo_->AddColorAttachment(2, normal_);
+  }
+  else
+  {
+    fbo_->AddColorAttachment(0, surfel_);
+  }
+  fbo_->AddDepthAttachment(depth_);
+  fbo_->ActivateDrawBuffers(targets);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglViewport(0, 0, width_, height_);
+  const float none = paper ? 0.0f : -1.0f;  // the paper's normal 0, or no surfel
+  state->vtkglClearColor(none, none, none, none);
+  state->vtkglClearDepth(1.0);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  // The paper's texels lifted by each disc's curvature; the pipeline's carry the surfel's list
+  // texel in the colour.
+  std::string vs = sss_surfel_vs;
+  vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Dec", "", true);
+  vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Impl", "", true);
+  vtkShaderProgram::Substitute(
+    vs, "//SSS::Shape::Dec", paper ? "in float curvatureMC;" : "in vec2 listTexelMC;", true);
+  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Impl",
+    paper ? "curvature_gs = curvatureMC;" : "colour_gs = vec4(listTexelMC, 0.0, 0.0);", true);
+  const std::string fs =
+    paper ? shader_with_pieces(sss_illumination_fs, "") : sss_light_map_surfel_fs;
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), sss_surfel_gs);
+  if (!program)
+  {
+    error = "the illumination-map shaders did not compile";
+    state->PopFramebufferBindings();
+    return false;
+  }
+  vtkOpenGLVertexArrayObject* vao = vao_.vao;
+  vao->Bind();
+  if (vao_.needs(program))
+  {
+    vao->ReleaseGraphicsResources();
+    vao->Bind();
+    vao->AddAttributeArray(program, buffers.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(program, buffers.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(program, buffers.disc_radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
+    if (paper)
+    {
+      vao->AddAttributeArray(
+        program, buffers.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+      vao->AddAttributeArray(
+        program, buffers.curvatures, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
+    }
+    else
+    {
+      vao->AddAttributeArray(
+        program, request.list_texel, "listTexelMC", 0, 8, VTK_FLOAT, 2, false);
+    }
+    vao_.program = program;
+  }
+  float eta[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    eta[c] = static_cast<float>(material.eta[c]);
+  }
+  program->SetUniform3f("eta", eta);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  const double reach = 0.5 * local.bounds.extent().norm() + local.max_disc_radius() + 1.0;
+  for (std::size_t l = 0; l < lights.size(); ++l)
+  {
+    const OrthoView& map = maps_[l];
+    Eigen::Matrix3d rows;
+    rows.row(0) = map.u.transpose();
+    rows.row(1) = map.v.transpose();
+    rows.row(2) = map.w.transpose();
+    Eigen::Matrix4f model_to_view = Eigen::Matrix4f::Identity();
+    model_to_view.block<3, 3>(0, 0) = rows.cast<float>();
+    const Eigen::Matrix3f normal_to_view = rows.cast<float>();
+    const Eigen::Matrix3f view_to_local = rows.transpose().cast<float>();
+    Eigen::Matrix4d ortho = Eigen::Matrix4d::Zero();
+    ortho(0, 0) = 2.0 / (map.width * map.pixel);
+    ortho(0, 3) = -2.0 * map.corner.x() / (map.width * map.pixel) - 1.0;
+    ortho(1, 1) = 2.0 / (map.height * map.pixel);
+    ortho(1, 3) = -2.0 * map.corner.y() / (map.height * map.pixel) - 1.0;
+    ortho(2, 2) = -1.0 / reach;
+    ortho(3, 3) = 1.0;
+    const Eigen::Matrix4f view_to_clip = ortho.cast<float>();
+    program->SetUniformMatrix4x4("modelToView", model_to_view.data());
+    program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normal_to_view.data()));
+    program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view_to_clip.data()));
+    program->SetUniformMatrix3x3("viewToLocal", const_cast<float*>(view_to_local.data()));
+    program->SetUniformi("perPointRadius", 1);
+    program->SetUniformf("modelToViewScale", 1.0f);
+    program->SetUniformi("orthographic", 1);
+    const float towards[3] = { static_cast<float>(lights[l].towards_light.x()),
+      static_cast<float>(lights[l].towards_light.y()),
+      static_cast<float>(lights[l].towards_light.z()) };
+    program->SetUniform3f("towardsLight", towards);
+    float power[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      power[c] = static_cast<float>(lights[l].irradiance[c] * map.pixel * map.pixel);
+    }
+    program->SetUniform3f("irradianceArea", power);
+    program->SetUniformi("albedoFromColour", albedo_from_colour ? 1 : 0);
+    const float albedo_as_is[3] = { 1.0f, 0.0f, 1.0f };  // ambient only: colour = colourMC
+    program->SetUniform3f("ambientDiffuse", albedo_as_is);
+    state->vtkglViewport(map_x_[l], 0, map.width, map.height);
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(buffers.count));
+  }
+  vao->Release();
+  fbo_->RemoveColorAttachments(targets);
+  fbo_->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+  return true;
+}
+
+}

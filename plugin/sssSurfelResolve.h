@@ -1,0 +1,65 @@
+// The hand-over from step 2 to the camera view: each surfel's B in a list texture in input
+// order (surfel i at texel (i % kListWidth, i / kListWidth)), taken from the surfel pipeline's
+// list or interpolated from the paper's virtual points (surfel_resolve_*.glsl), or given.
+#ifndef sssSurfelResolve_h
+#define sssSurfelResolve_h
+
+#include "material.h"
+#include "sssGpuHelpers.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace sss
+{
+
+class PaperVirtualPoints;
+
+class SurfelResolve
+{
+public:
+  // A list for `count` surfels, its B not yet set.
+  void allocate(vtkOpenGLRenderWindow* window, std::size_t count);
+  // B from the surfel pipeline: `radiance` in its list layout, `list_texel` each surfel's texel
+  // there (input order); `points` the surfels' local positions.
+  bool from_list(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
+    vtkOpenGLBufferObject* list_texel, vtkTextureObject* radiance, std::string& error);
+  // B interpolated from the paper's virtual points at each surfel's position.
+  bool from_grid(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
+    const PaperVirtualPoints& grid, std::string& error);
+  // B given per surfel (e.g. the CPU reference's).
+  void set(vtkOpenGLRenderWindow* window, const std::vector<Rgb>& B);
+  bool read(vtkOpenGLRenderWindow* window, std::vector<Rgb>& B);
+
+  vtkTextureObject* texture() const { return list_; }
+  int width() const { return kListWidth; }
+  // The attributes of `points` are bound anew at the next resolve.
+  void buffers_changed() { vao_.program = nullptr; }
+  void release(vtkWindow* window);
+
+private:
+  bool draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
+    vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const PaperVirtualPoints* grid,
+    std::string& error);
+
+  std::size_t count_ = 0;
+  int height_ = 1;
+  vtkSmartPointer<vtkTextureObject> list_;
+  vtkNew<vtkOpenGLBufferObject> no_texel_;  // the texel attribute for the grid: unused
+  std::size_t no_texel_count_ = 0;
+  vtkNew<vtkOpenGLFramebufferObject> fbo_;
+  ProgramVAO vao_;
+};
+
+}
+
+#endif
