@@ -29,6 +29,14 @@ vtkSmartPointer<vtkTextureObject> float_texture_2d(
   return tex;
 }
 
+vtkSmartPointer<vtkTextureObject> upload_float_texture(
+  vtkOpenGLRenderWindow* window, int w, int h, const std::vector<float>& texels)
+{
+  vtkSmartPointer<vtkTextureObject> t = float_texture_2d(window, w, h);
+  t->Create2DFromRaw(w, h, 4, VTK_FLOAT, const_cast<float*>(texels.data()));
+  return t;
+}
+
 vtkShaderProgram* ready_quad(
   std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* window, const char* fs)
 {

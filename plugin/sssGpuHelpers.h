@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLQuadHelper;
@@ -27,6 +28,10 @@ constexpr int kListWidth = 256;  // of list textures: squarish keeps the rasteri
 // edges.
 vtkSmartPointer<vtkTextureObject> float_texture_2d(
   vtkOpenGLRenderWindow* window, int w, int h, int components = 4);
+
+// The same holding `texels` (RGBA, w x h).
+vtkSmartPointer<vtkTextureObject> upload_float_texture(
+  vtkOpenGLRenderWindow* window, int w, int h, const std::vector<float>& texels);
 
 // Creates the full-screen quad on first use and binds its program; nullptr if it did not
 // compile.

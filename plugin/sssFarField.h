@@ -1,0 +1,30 @@
+// Step 2's far field on the GPU (far_field.glsl): at every surfel, a walk of each light's
+// source pyramid (sssLitCells) over the cells beyond the near field's reach, a group of cells
+// taken as one source once it is small and far enough (the opening angle), added to B.
+#ifndef sssFarField_h
+#define sssFarField_h
+
+class vtkOpenGLQuadHelper;
+class vtkOpenGLState;
+class vtkShaderProgram;
+
+namespace sss
+{
+
+class LitCells;
+
+struct FarFieldSettings
+{
+  double opening_angle = 0;                // a group's spread over its distance
+  double max_group_diffusion_lengths = 0;  // a group's radius, in 1/s_tr
+  double support_radius = 0;               // mm: sources beyond add nothing
+};
+
+// Adds the far field of `lights` lights into the bound target with `program` (a quad over the
+// surfel list that includes far_field.glsl), blending by addition.
+void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
+  const LitCells& cells, int lights, const FarFieldSettings& settings);
+
+}
+
+#endif

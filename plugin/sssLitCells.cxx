@@ -1,0 +1,344 @@
+#include "sssLitCells.h"
+
+#include "sssGpuHelpers.h"
+#include "sssLightMaps.h"
+#include "sssSurfelList.h"
+#include "sss_fresnel_table.h"
+#include "sss_light_maps.h"
+#include "sss_light_visibility.h"
+#include "sss_pyramid_reduce_fs.h"
+#include "sss_surfel_irradiance_fs.h"
+#include "sss_surfel_list.h"
+
+#include "fresnel.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+namespace sss
+{
+
+namespace
+{
+constexpr int kFresnelTableSize = 256;
+
+void SetFloat3Array(vtkShaderProgram* program, const char* name, const std::vector<Eigen::Vector3d>& v)
+{
+  std::vector<float> f(3 * kMaxLights, 0.0f);
+  for (std::size_t i = 0; i < v.size() && i < std::size_t(kMaxLights); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      f[3 * i + c] = static_cast<float>(v[i][c]);
+    }
+  }
+  program->SetUniform3fv(name, kMaxLights, f.data());
+}
+
+// The light maps' uniforms and samplers (light_maps.glsl); the maps must be active.
+void SetMaps(vtkShaderProgram* program, const LightMapAtlas& maps)
+{
+  std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f), texel(kMaxLights, 0.0f),
+    corner(2 * kMaxLights, 0.0f);
+  std::vector<Eigen::Vector3d> u, v, towards, irradiance;
+  for (std::size_t l = 0; l < maps.maps.size(); ++l)
+  {
+    const LightMapAtlas::Map& m = maps.maps[l];
+    float* r = &rects[4 * l * kMaxLevels];
+    r[0] = float(m.x);
+    r[1] = float(m.y);
+    r[2] = float(m.width);
+    r[3] = float(m.height);
+    texel[l] = static_cast<float>(m.texel);
+    corner[2 * l] = static_cast<float>(m.corner.x());
+    corner[2 * l + 1] = static_cast<float>(m.corner.y());
+    u.push_back(m.u);
+    v.push_back(m.v);
+    towards.push_back(m.towards_light);
+    irradiance.push_back(Eigen::Vector3d(m.irradiance[0], m.irradiance[1], m.irradiance[2]));
+  }
+  program->SetUniformi("lightCount", static_cast<int>(maps.maps.size()));
+  program->SetUniform4fv("levelRect", kMaxLights * kMaxLevels, rects.data());
+  program->SetUniform1fv("texelSize", kMaxLights, texel.data());
+  program->SetUniform2fv("mapCorner", kMaxLights, corner.data());
+  SetFloat3Array(program, "mapAxisU", u);
+  SetFloat3Array(program, "mapAxisV", v);
+  SetFloat3Array(program, "lightDirection", towards);
+  SetFloat3Array(program, "lightIrradiance", irradiance);
+  program->SetUniformi("mapSurfel", maps.surfel->GetTextureUnit());
+}
+
+void Barrier()
+{
+  if (GLEW_VERSION_4_5 || GLEW_ARB_texture_barrier)
+  {
+    glTextureBarrier();
+  }
+  else
+  {
+    glFinish();
+  }
+}
+}
+
+LitCells::LitCells() = default;
+LitCells::~LitCells() = default;
+
+void LitCells::release(vtkWindow* window)
+{
+  for (auto* t : { &E_, &fresnel_ })
+  {
+    if (*t)
+    {
+      (*t)->ReleaseGraphicsResources(window);
+      *t = nullptr;
+    }
+  }
+  for (auto& t : source_)
+  {
+    if (t)
+    {
+      t->ReleaseGraphicsResources(window);
+      t = nullptr;
+    }
+  }
+  for (auto* q : { &irradiance_quad_, &reduce_quad_ })
+  {
+    if (*q)
+    {
+      (*q)->ReleaseGraphicsResources(window);
+      q->reset();
+    }
+  }
+  fbo_->ReleaseGraphicsResources(window);
+  atlas_lights_ = 0;
+}
+
+void LitCells::bake(vtkOpenGLRenderWindow* window, const Material& material)
+{
+  std::vector<float> table(4 * kFresnelTableSize, 1.0f);
+  for (int k = 0; k < kFresnelTableSize; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      table[4 * k + c] = static_cast<float>(
+        fresnel_transmittance(material.eta[c], double(k) / (kFresnelTableSize - 1)));
+    }
+  }
+  fresnel_ = float_texture_2d(window, kFresnelTableSize, 1);
+  fresnel_->SetMinificationFilter(vtkTextureObject::Linear);
+  fresnel_->SetMagnificationFilter(vtkTextureObject::Linear);
+  fresnel_->Create2DFromRaw(kFresnelTableSize, 1, 4, VTK_FLOAT, table.data());
+  atlas_lights_ = 0;
+}
+
+// Each light's pyramid: level 0 the list's size at (0, l * height), the coarser levels to its
+// right.
+void LitCells::allocate(vtkOpenGLRenderWindow* window, int width, int height, int lights)
+{
+  levels_.assign(lights, {});
+  for (int l = 0; l < lights; ++l)
+  {
+    std::vector<Rect>& r = levels_[l];
+    r.push_back({ 0, l * height, width, height });
+    int w = width, h = height, y = l * height;
+    while (w > 1 || h > 1)
+    {
+      w = (w + 1) / 2;
+      h = (h + 1) / 2;
+      r.push_back({ width, y, w, h });
+      y += h;
+    }
+  }
+  if (atlas_lights_ == lights && atlas_width_ == width && atlas_height_ == height && E_)
+  {
+    return;
+  }
+  const int atlas_w = width + std::max(1, width / 2);
+  const int atlas_h = height * lights;
+  E_ = float_texture_2d(window, width, atlas_h);
+  for (auto& t : source_)
+  {
+    t = float_texture_2d(window, atlas_w, atlas_h);
+  }
+  atlas_lights_ = lights;
+  atlas_width_ = width;
+  atlas_height_ = height;
+}
+
+int LitCells::levels(int light) const
+{
+  return static_cast<int>(levels_[light].size());
+}
+
+int LitCells::level_width(int light, int level) const
+{
+  return levels_[light][level].width;
+}
+
+int LitCells::level_height(int light, int level) const
+{
+  return levels_[light][level].height;
+}
+
+bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
+  const LightMapAtlas& maps, double disc_radius, const LitCellSettings& settings,
+  std::size_t& lit, std::string& error)
+{
+  const int lights = static_cast<int>(maps.maps.size());
+  allocate(window, list.width(), list.height(), std::max(lights, 1));
+  const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs,
+    std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table);
+  vtkShaderProgram* irradiance = ready_quad(irradiance_quad_, window, irradiance_fs.c_str());
+  vtkShaderProgram* reduce =
+    irradiance ? ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs) : nullptr;
+  if (!irradiance || !reduce)
+  {
+    error = "the irradiance or pyramid shader did not compile";
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  PointPassState pass_state(state);
+  state->PushFramebufferBindings();
+  fbo_->SetContext(window);
+  fbo_->Bind();
+
+  // Each light: the cells' irradiance and the finest level of its source pyramid.
+  state->vtkglClearColor(0, 0, 0, 0);
+  state->vtkglViewport(0, 0, source_[0]->GetWidth(), source_[0]->GetHeight());
+  for (int k = 0; k < kSources; ++k)
+  {
+    fbo_->AddColorAttachment(k, source_[k]);
+  }
+  fbo_->ActivateDrawBuffers(kSources);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  fbo_->RemoveColorAttachments(kSources);
+  fbo_->AddColorAttachment(0, E_);
+  for (int k = 0; k < kCellSources; ++k)
+  {
+    fbo_->AddColorAttachment(k + 1, source_[k]);
+  }
+  fbo_->ActivateDrawBuffers(kCellSources + 1);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  window->GetShaderCache()->ReadyShaderProgram(irradiance);
+  maps.surfel->Activate();
+  list.activate();
+  fresnel_->Activate();
+  SetMaps(irradiance, maps);
+  irradiance->SetUniformf("kappaLimitCell", static_cast<float>(1.0 / disc_radius));
+  list.set(irradiance);
+  irradiance->SetUniformi("fresnelTable", fresnel_->GetTextureUnit());
+  irradiance->SetUniformi("fresnelTableSize", kFresnelTableSize);
+  irradiance->SetUniformi("cellSamples", settings.cell_samples);
+  irradiance->SetUniformi("cellRefinedSamples", settings.cell_refined_samples);
+  for (int l = 0; l < lights; ++l)
+  {
+    irradiance->SetUniformi("light", l);
+    const Rect& r = levels_[l][0];
+    state->vtkglViewport(r.x, r.y, r.width, r.height);
+    irradiance_quad_->Render();
+  }
+  fresnel_->Deactivate();
+  list.deactivate();
+  maps.surfel->Deactivate();
+  fbo_->RemoveColorAttachments(kCellSources + 1);
+
+  // The coarser levels.
+  for (int k = 0; k < kSources; ++k)
+  {
+    fbo_->AddColorAttachment(k, source_[k]);
+  }
+  fbo_->ActivateDrawBuffers(kSources);
+  window->GetShaderCache()->ReadyShaderProgram(reduce);
+  for (auto& t : source_)
+  {
+    t->Activate();
+  }
+  const char* names[kSources] = { "mapPoint", "mapPower", "mapNormal", "mapCovariance0",
+    "mapCovariance1", "mapCovariance2", "mapCovariance3", "mapCovariance4" };
+  for (int k = 0; k < kSources; ++k)
+  {
+    reduce->SetUniformi(names[k], source_[k]->GetTextureUnit());
+  }
+  for (int l = 0; l < lights; ++l)
+  {
+    for (std::size_t L = 1; L < levels_[l].size(); ++L)
+    {
+      const Rect& src = levels_[l][L - 1];
+      const Rect& dst = levels_[l][L];
+      const int origin[2] = { src.x, src.y }, size[2] = { src.width, src.height },
+                target[2] = { dst.width, dst.height };
+      reduce->SetUniform2i("sourceOrigin", origin);
+      reduce->SetUniform2i("sourceSize", size);
+      reduce->SetUniform2i("targetSize", target);
+      Barrier();
+      state->vtkglViewport(dst.x, dst.y, dst.width, dst.height);
+      reduce_quad_->Render();
+    }
+  }
+  Barrier();
+  for (auto& t : source_)
+  {
+    t->Deactivate();
+  }
+  // The pyramids' tops count the lit cells.
+  lit = 0;
+  fbo_->ActivateReadBuffer(1);
+  for (int l = 0; l < lights; ++l)
+  {
+    const Rect& top = levels_[l].back();
+    float value[4] = { 0, 0, 0, 0 };
+    glReadPixels(top.x, top.y, 1, 1, GL_RGBA, GL_FLOAT, value);
+    lit += static_cast<std::size_t>(value[3] + 0.5f);
+  }
+  fbo_->RemoveColorAttachments(kSources);
+  state->PopFramebufferBindings();
+  return true;
+}
+
+void LitCells::activate(vtkShaderProgram* program) const
+{
+  E_->Activate();
+  program->SetUniformi("irradiance", E_->GetTextureUnit());
+  const char* names[kSources] = { "sourcePoint", "sourcePower", "sourceNormal",
+    "sourceCovariance0", "sourceCovariance1", "sourceCovariance2", "sourceCovariance3",
+    "sourceCovariance4" };
+  for (int k = 0; k < kSources; ++k)
+  {
+    source_[k]->Activate();
+    program->SetUniformi(names[k], source_[k]->GetTextureUnit());
+  }
+  std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f);
+  for (std::size_t l = 0; l < levels_.size(); ++l)
+  {
+    for (std::size_t L = 0; L < levels_[l].size() && L < std::size_t(kMaxLevels); ++L)
+    {
+      const Rect& r = levels_[l][L];
+      float* out = &rects[4 * (l * kMaxLevels + L)];
+      out[0] = float(r.x);
+      out[1] = float(r.y);
+      out[2] = float(r.width);
+      out[3] = float(r.height);
+    }
+  }
+  program->SetUniform4fv("sourceLevelRect", kMaxLights * kMaxLevels, rects.data());
+}
+
+void LitCells::deactivate() const
+{
+  for (auto& t : source_)
+  {
+    t->Deactivate();
+  }
+  E_->Deactivate();
+}
+
+}

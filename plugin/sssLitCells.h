@@ -1,0 +1,82 @@
+// Step 2, what a light move changes: each surfel's cell lit through the light maps (its E,
+// eq. 15, from several samples over the cell tested for visibility: surfel_irradiance_fs.glsl)
+// and each light's source pyramid over the surfel list (pyramid_reduce_fs.glsl): per node the
+// power-weighted point, normal and power of the cells under it and their second moments, for
+// the far field's walk (far_field.glsl).
+#ifndef sssLitCells_h
+#define sssLitCells_h
+
+#include "material.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace sss
+{
+
+class SurfelList;
+struct LightMapAtlas;
+
+struct LitCellSettings
+{
+  int cell_samples = 0;          // per cell and light, for its irradiance
+  int cell_refined_samples = 0;  // where those disagree (an edge crosses the cell)
+};
+
+class LitCells
+{
+public:
+  static constexpr int kSources = 8;  // pyramid textures (at most 8 draw buffers)
+
+  LitCells();
+  ~LitCells();
+
+  // The Fresnel table of the material's eta.
+  void bake(vtkOpenGLRenderWindow* window, const Material& material);
+  // E and the source pyramids for the lights of `maps`; `disc_radius` (mm) bounds the
+  // curvature that lifts a cell's samples. `lit` counts the lit cells over all lights.
+  bool light(vtkOpenGLRenderWindow* window, const SurfelList& list, const LightMapAtlas& maps,
+    double disc_radius, const LitCellSettings& settings, std::size_t& lit, std::string& error);
+
+  // far_field.glsl's and near_field.glsl's textures: the pyramids and E, bound for `program`.
+  void activate(vtkShaderProgram* program) const;
+  void deactivate() const;
+  // Levels of light l's pyramid: their count and the nodes of a level.
+  int levels(int light) const;
+  int level_width(int light, int level) const;
+  int level_height(int light, int level) const;
+
+  void release(vtkWindow* window);
+
+private:
+  struct Rect
+  {
+    int x, y, width, height;
+  };
+  void allocate(vtkOpenGLRenderWindow* window, int width, int height, int lights);
+
+  // Per light atlases: E, and the source pyramid: point, power, normal, then the moments of
+  // points, normals and their cross term. The irradiance pass writes the first kCellSources
+  // at level 0; a cell's normal is constant, so the others are 0 there.
+  static constexpr int kCellSources = 5;
+  vtkSmartPointer<vtkTextureObject> E_, source_[kSources], fresnel_;
+  int atlas_lights_ = 0, atlas_width_ = 0, atlas_height_ = 0;
+  std::vector<std::vector<Rect>> levels_;  // per light: the pyramid's levels
+  vtkNew<vtkOpenGLFramebufferObject> fbo_;
+  std::unique_ptr<vtkOpenGLQuadHelper> irradiance_quad_, reduce_quad_;
+};
+
+}
+
+#endif
