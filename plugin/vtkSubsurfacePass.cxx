@@ -51,6 +51,8 @@ struct vtkSubsurfacePass::Internals
   vtkNew<vtkFloatArray> Linear;
   std::set<std::string> Reported;
   std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> Precomputed;
+  // The renderer's lights this frame: direction towards each (world frame), irradiance.
+  std::vector<std::pair<Eigen::Vector3d, sss::Rgb>> Lights;
 
   void ReportOnce(vtkSubsurfacePass* self, const std::string& message, bool error)
   {
@@ -107,11 +109,33 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
     vtkErrorMacro(<< "needs an OpenGL render window and a delegate pass");
     return;
   }
-  Internals& impl = *this->Impl;
   sss::Stopwatch frameClock;
+  this->GatherLights(ren);
+  this->UpdateTranslucentActors(s, window);
+  frameClock.lap();  // the view's time starts here
+  int width, height, x0, y0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width < 1 || height < 1)
+  {
+    return;
+  }
+  this->RenderScene(s, window, width, height);
+  if (this->Composite(window, width, height, x0, y0) && !this->Impl->Ready.empty())
+  {
+    ++this->ViewRuns;
+    if (this->MeasureStepTimes)
+    {
+      glFinish();
+    }
+    this->LastViewSeconds = frameClock.lap();
+  }
+}
 
-  // Lights, as directions from the object towards the light in world coordinates.
-  std::vector<std::pair<Eigen::Vector3d, sss::Rgb>> lights;
+void vtkSubsurfacePass::GatherLights(vtkRenderer* ren)
+{
+  Internals& impl = *this->Impl;
+  std::vector<std::pair<Eigen::Vector3d, sss::Rgb>>& lights = impl.Lights;
+  lights.clear();
   if (ren->GetLights()->GetNumberOfItems() == 0 && ren->GetAutomaticLightCreation())
   {
     ren->CreateLight();  // the headlight VTK would add later in this frame
@@ -152,6 +176,12 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
     lights.resize(sss::kMaxLights);
   }
 
+}
+
+void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
+{
+  Internals& impl = *this->Impl;
+  const std::vector<std::pair<Eigen::Vector3d, sss::Rgb>>& lights = impl.Lights;
   sss::GpuSettings settings;
   settings.strategy = this->KernelStrategy == PAPER ? sss::KernelStrategy::Paper
                                                     : sss::KernelStrategy::NearFar;
@@ -166,7 +196,6 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   // Steps 1-2 for each translucent actor, where their inputs changed.
   impl.Ready.clear();
   std::set<vtkActor*> seen;
-  sss::StepReport total;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
@@ -261,34 +290,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
       continue;
     }
     impl.Ready.insert(actor);
-    if (report.bake)
-    {
-      ++this->BakeRuns;
-      this->LastBakeSeconds = report.seconds_bake;
-      this->LastNearReachMillimetres = report.near_reach_mm;
-      this->LastFarFromMillimetres = report.far_from_mm;
-      this->LastNearFieldEntries = static_cast<vtkIdType>(report.near_entries);
-      this->LastVirtualPoints = static_cast<vtkIdType>(report.virtual_point_count);
-      this->LastGridLevel = report.grid_level;
-      this->LastGridSpacingMillimetres = report.grid_spacing_mm;
-    }
-    if (report.illumination)
-    {
-      ++this->IlluminationRuns;
-      this->LastIlluminationSeconds = report.seconds_illumination;
-      this->LastMapWidth = report.map_width;
-      this->LastMapHeight = report.map_height;
-      this->LastTexelMillimetres = report.texel_mm;
-    }
-    if (report.surfels)
-    {
-      ++this->SurfelRuns;
-      this->LastSurfelSeconds = report.seconds_surfels;
-      this->LastCellSeconds = report.seconds_cells;
-      this->LastRadianceSeconds = report.seconds_B;
-      this->LastLitCells = static_cast<vtkIdType>(report.lit_cells);
-    }
-    this->LastSurfels = static_cast<vtkIdType>(report.surfel_count);
+    this->Record(report);
   }
   for (auto it2 = impl.States.begin(); it2 != impl.States.end();)
   {
@@ -303,16 +305,45 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
     }
   }
   this->LastTranslucentActors = static_cast<int>(impl.Ready.size());
-  frameClock.lap();  // the view's time starts here
+}
 
-  // Step 3: the delegate renders everything into the float image; translucent surfels take
-  // their radiance from this pass through the render-pass shader protocol.
-  int width, height, x0, y0;
-  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
-  if (width < 1 || height < 1)
+void vtkSubsurfacePass::Record(const sss::StepReport& report)
+{
+  if (report.bake)
   {
-    return;
+    ++this->BakeRuns;
+    this->LastBakeSeconds = report.seconds_bake;
+    this->LastNearReachMillimetres = report.near_reach_mm;
+    this->LastFarFromMillimetres = report.far_from_mm;
+    this->LastNearFieldEntries = static_cast<vtkIdType>(report.near_entries);
+    this->LastVirtualPoints = static_cast<vtkIdType>(report.virtual_point_count);
+    this->LastGridLevel = report.grid_level;
+    this->LastGridSpacingMillimetres = report.grid_spacing_mm;
   }
+  if (report.illumination)
+  {
+    ++this->IlluminationRuns;
+    this->LastIlluminationSeconds = report.seconds_illumination;
+    this->LastMapWidth = report.map_width;
+    this->LastMapHeight = report.map_height;
+    this->LastTexelMillimetres = report.texel_mm;
+  }
+  if (report.surfels)
+  {
+    ++this->SurfelRuns;
+    this->LastSurfelSeconds = report.seconds_surfels;
+    this->LastCellSeconds = report.seconds_cells;
+    this->LastRadianceSeconds = report.seconds_B;
+    this->LastLitCells = static_cast<vtkIdType>(report.lit_cells);
+  }
+  this->LastSurfels = static_cast<vtkIdType>(report.surfel_count);
+}
+
+void vtkSubsurfacePass::RenderScene(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height)
+{
+  Internals& impl = *this->Impl;
+  vtkRenderer* ren = s->GetRenderer();
   if (!impl.Colour || impl.Colour->GetWidth() != static_cast<unsigned int>(width) ||
     impl.Colour->GetHeight() != static_cast<unsigned int>(height))
   {
@@ -375,13 +406,18 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   impl.FrameBuffer->RemoveColorAttachments(1);
   impl.FrameBuffer->RemoveDepthAttachment();
   state->PopFramebufferBindings();
+}
 
-  // Composite into the output, with depth, tone mapping translucent pixels.
+bool vtkSubsurfacePass::Composite(
+  vtkOpenGLRenderWindow* window, int width, int height, int x0, int y0)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
   vtkShaderProgram* composite = sss::ready_quad(impl.Composite, window, sss_composite_fs);
   if (!composite)
   {
     vtkErrorMacro(<< "the composite shader did not compile");
-    return;
+    return false;
   }
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
@@ -400,15 +436,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   impl.Composite->Render();
   impl.Colour->Deactivate();
   impl.Depth->Deactivate();
-  if (!impl.Ready.empty())
-  {
-    ++this->ViewRuns;
-    if (this->MeasureStepTimes)
-    {
-      glFinish();
-    }
-    this->LastViewSeconds = frameClock.lap();
-  }
+  return true;
 }
 
 bool vtkSubsurfacePass::PreReplaceShaderValues(std::string& vertexShader, std::string&,

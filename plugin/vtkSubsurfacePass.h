@@ -32,6 +32,13 @@
 #include <memory>
 #include <string>
 
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+namespace sss
+{
+struct StepReport;
+}
+
 class vtkActor;
 class vtkFloatArray;
 
@@ -240,6 +247,19 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Impl;
+
+  // The steps of Render, in order.
+  // The renderer's switched-on lights into Impl (world frame).
+  void GatherLights(vtkRenderer* ren);
+  // Steps 1-2 for every visible translucent actor whose inputs changed; fills Impl->Ready.
+  void UpdateTranslucentActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  // Step 3: the delegate draws the scene into the float image, translucent surfels taking B
+  // through this pass's shader hooks.
+  void RenderScene(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
+  // The float image into the output, tone mapping translucent pixels, with depth.
+  bool Composite(vtkOpenGLRenderWindow* window, int width, int height, int x0, int y0);
+  // The statistics of one actor's steps.
+  void Record(const sss::StepReport& report);
 };
 
 #endif
