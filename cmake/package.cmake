@@ -1,16 +1,19 @@
-# find_package(SSS) for other projects: SSSConfig.cmake finds the VTK modules that
-# SSS::Translucency's interface names, then loads the exported target and its VTK module
+# find_package(SSS) for other projects: SSSConfig.cmake finds the VTK modules that the
+# interfaces of SSS::Translucency and SSS::Headless name, then loads the exported target and its VTK module
 # properties (for vtk_module_autoinit). sss_core is linked into the shared library privately,
 # so it is neither exported nor installed.
 include(CMakePackageConfigHelpers)
 
-get_target_property(sss_interface_links Translucency INTERFACE_LINK_LIBRARIES)
 set(SSS_VTK_COMPONENTS)
-foreach(link IN LISTS sss_interface_links)
-  if(link MATCHES "^VTK::(.+)$")
-    list(APPEND SSS_VTK_COMPONENTS "${CMAKE_MATCH_1}")
-  endif()
+foreach(target IN ITEMS Translucency Headless)
+  get_target_property(sss_interface_links ${target} INTERFACE_LINK_LIBRARIES)
+  foreach(link IN LISTS sss_interface_links)
+    if(link MATCHES "^VTK::(.+)$")
+      list(APPEND SSS_VTK_COMPONENTS "${CMAKE_MATCH_1}")
+    endif()
+  endforeach()
 endforeach()
+list(REMOVE_DUPLICATES SSS_VTK_COMPONENTS)
 string(JOIN " " SSS_VTK_COMPONENTS ${SSS_VTK_COMPONENTS})
 set(SSS_VTK_VERSION "${VTK_MAJOR_VERSION}.${VTK_MINOR_VERSION}")
 

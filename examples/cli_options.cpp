@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "quality_settings.h"
 #include "splat_coverage.h"
 
 namespace sss::cli {
@@ -107,6 +108,8 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
                             stderr), shown the same way
   --backend osmesa|egl|x    OpenGL context: OSMesa or EGL surfaceless (no display needed;
                             default egl) or an X window (needs DISPLAY)
+  --quality NAME            interactive, balanced (default) or accurate: named settings of
+                            the flags below, which override it (docs/benchmark/bench.md)
   --strategy NAME           near-far (default): each surfel's cell lit through the light
                             map, near field from a table of weights, far field by a walk of
                             the lit cells; paper: 49 Gaussian taps in a 40x40 window of a
@@ -144,6 +147,7 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
 }
 
 void apply_pass_settings(const Options& o, vtkSubsurfacePass* pass) {
+  if (o.quality) pass->SetQualityPreset(*o.quality);
   if (o.strategy) pass->SetKernelStrategyByName(*o.strategy);
   if (o.grid_level) pass->SetGridLevel(*o.grid_level);
   if (o.max_map_size) pass->SetMaxMapSize(*o.max_map_size);
@@ -222,6 +226,13 @@ Options parse(int argc, char** argv) {
       o.backend = value();
       if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "x")
         throw std::invalid_argument("--backend: '" + o.backend + "' is not osmesa, egl or x");
+    } else if (flag == "--quality") {
+      o.quality = value();
+      try {
+        QualitySettings::preset(*o.quality);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--quality: ") + e.what());
+      }
     } else if (flag == "--strategy") {
       o.strategy = value();
       vtkNew<vtkSubsurfacePass> probe;

@@ -34,7 +34,7 @@ struct Options {
   std::string method = "gpu";
   std::string backend = "egl";
   // The pass's settings: unset ones keep vtkSubsurfacePass's defaults.
-  std::optional<std::string> strategy;
+  std::optional<std::string> quality, strategy;
   std::optional<int> grid_level, max_map_size, cell_samples;
   std::optional<double> opening_angle, group_diffusion_lengths, texel_per_radius;
   double exposure = 0.0;  // 0: automatic

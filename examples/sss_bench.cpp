@@ -31,13 +31,19 @@
 #include "procedural_shapes.h"
 #include "reference_cache.h"
 #include "render_window.h"
-#include "scan_io.h"
 #include "splat_coverage.h"
 #include "stopwatch.h"
 #include "translucent_scene.h"
 #include "whole_file.h"
 
 namespace {
+
+// Path of a file in the shared data folder (../shared/data beside the checkout), or "" when it
+// is absent.
+std::string shared_data(const std::string& name) {
+  const std::string path = std::string(SSS_DATA_DIR) + "/" + name;
+  return std::ifstream(path).good() ? path : std::string();
+}
 
 namespace fs = std::filesystem;
 using sss::cli::number;
@@ -71,6 +77,7 @@ options (default in brackets)
                        discs, radiance given) [paper,near-far]
   --scale-only         only the scale sweep
   --settings LIST      measure these settings instead of the sweep: comma-separated
+                       quality presets (interactive, balanced, accurate) or
                        strategy[:map[:angle[:samples]]] (strategy near-far or paper; largest
                        map side; far-field opening angle; cell samples), e.g.
                        near-far:2048:0.6:16; unset fields keep the pass's defaults
@@ -114,22 +121,40 @@ std::vector<std::string> split(const std::string& text) {
 
 // A setting of the pass; unset fields keep the pass's defaults.
 struct Setting {
-  std::string strategy;
-  int max_map = 0, cell_samples = 0;
+  std::string preset = "balanced";  // vtkSubsurfacePass's quality preset, then the fields below
+  std::string strategy = "near-far";
+  int max_map = 0, cell_samples = 0;  // 0: the preset's
   double opening_angle = 0;
   bool is_paper = false, is_default = false;
 };
 
-// "strategy[:map[:angle[:samples]]]", e.g. "near-far:1024:1:8"; "paper" is the paper's.
+// Onto `pass`: the preset, then the fields given.
+void apply(const Setting& s, vtkSubsurfacePass* pass) {
+  pass->SetQualityPreset(s.preset);
+  pass->SetKernelStrategyByName(s.strategy);
+  if (s.max_map) pass->SetMaxMapSize(s.max_map);
+  if (s.opening_angle) pass->SetOpeningAngle(s.opening_angle);
+  if (s.cell_samples) pass->SetCellSamples(s.cell_samples);
+}
+
+// A quality preset's name ("interactive", "balanced", "accurate"), or
+// "strategy[:map[:angle[:samples]]]" over the defaults, e.g. "near-far:1024:1:8"; "paper" is
+// the paper's.
 Setting setting_of(const std::string& text) {
   std::vector<std::string> f;
   std::stringstream in(text);
   for (std::string part; std::getline(in, part, ':');) f.push_back(part);
   Setting s;
-  s.strategy = f.at(0);
   vtkNew<vtkSubsurfacePass> pass;
-  if (!pass->SetKernelStrategyByName(s.strategy))
-    throw std::invalid_argument("--settings: '" + s.strategy + "' is not near-far or paper");
+  if (pass->SetQualityPreset(text)) {
+    s.preset = text;
+  } else {
+    s.strategy = f.empty() ? text : f[0];
+    if (!pass->SetKernelStrategyByName(s.strategy))
+      throw std::invalid_argument("--settings: '" + text +
+                                  "' is not a quality preset (interactive, balanced, accurate) "
+                                  "nor starts with near-far or paper");
+  }
   if (f.size() > 4) throw std::invalid_argument("--settings: '" + text + "' has more than 4 parts");
   if (f.size() > 1 && !f[1].empty()) {
     s.max_map = static_cast<int>(sss::cli::count("--settings map", f[1], 16384));
@@ -144,11 +169,9 @@ Setting setting_of(const std::string& text) {
     s.cell_samples = static_cast<int>(sss::cli::count("--settings samples", f[3], 256));
     if (s.cell_samples < 1) throw std::invalid_argument("--settings samples: needs 1 to 256");
   }
+  apply(s, pass);
   s.is_paper = s.strategy == "paper";
-  vtkNew<vtkSubsurfacePass> defaults;
-  s.is_default = !s.is_paper && (s.max_map == 0 || s.max_map == defaults->GetMaxMapSize()) &&
-                 (s.opening_angle == 0 || s.opening_angle == defaults->GetOpeningAngle()) &&
-                 (s.cell_samples == 0 || s.cell_samples == defaults->GetCellSamples());
+  s.is_default = !s.is_paper && pass->GetQualityPresetAsString() == "balanced";
   return s;
 }
 
@@ -256,13 +279,13 @@ void write_row(std::ostream& out, const Row& r) {
   out.flush();
 }
 
-// The sweep: the paper's setting, the pass's defaults (the PCL handle's balanced quality),
-// the handle's interactive and accurate qualities, and a coarser far field alone.
+// The sweep: the paper's setting, the quality presets (balanced: the defaults), and a coarser
+// far field alone.
 std::vector<Setting> sweep(bool quick) {
-  const Setting paper = setting_of("paper"), defaults = setting_of("near-far");
-  if (quick) return {paper, defaults, setting_of("near-far:2048:0.6:16")};
-  return {paper, defaults, setting_of("near-far:2048:0.6:16"), setting_of("near-far:4096:0.6"),
-          setting_of("near-far:4096:0.3:128")};
+  const Setting paper = setting_of("paper"), defaults = setting_of("balanced");
+  if (quick) return {paper, defaults, setting_of("interactive")};
+  return {paper, defaults, setting_of("interactive"), setting_of("near-far:4096:0.6"),
+          setting_of("accurate")};
 }
 
 struct Cloud {
@@ -327,11 +350,7 @@ std::vector<sss::Rgb> read_B(TranslucentScene& scene) {
 // Applies a setting, renders the bake, times frames; fills the row's timings and counts.
 void measure(TranslucentScene& scene, const Setting& s, int frames, Row& row) {
   vtkSubsurfacePass* pass = scene.pass;
-  vtkNew<vtkSubsurfacePass> defaults;
-  pass->SetKernelStrategyByName(s.strategy);
-  pass->SetMaxMapSize(s.max_map ? s.max_map : defaults->GetMaxMapSize());
-  pass->SetOpeningAngle(s.opening_angle ? s.opening_angle : defaults->GetOpeningAngle());
-  pass->SetCellSamples(s.cell_samples ? s.cell_samples : defaults->GetCellSamples());
+  apply(s, pass);
   scene.window->Render();
   row.strategy = s.strategy;
   row.is_paper = s.is_paper;
@@ -448,7 +467,7 @@ void run_view(const Options& o, TranslucentScene& scene, const Cloud& cloud, dou
 void run_scale(const Options& o, std::ostream& csv) {
   const bool procedural = o.scale_mesh.empty() && o.quick;
   const std::string mesh =
-    o.scale_mesh.empty() ? sss::test::shared_data("dragon_vrip_res2.ply.gz") : o.scale_mesh;
+    o.scale_mesh.empty() ? shared_data("dragon_vrip_res2.ply.gz") : o.scale_mesh;
   if (!procedural && mesh.empty()) {
     std::fprintf(stderr, "scale sweep skipped: dragon_vrip_res2.ply.gz is not in the shared data "
                          "folder (give --scale-mesh)\n");
@@ -529,7 +548,7 @@ std::vector<Cloud> clouds_of(const Options& o) {
              {"CSite1_red1-utm.pcd", 0, kTileLight, Eigen::Vector3d(0, -0.5, 1),
               Eigen::Vector3d(0, 1, 0), {"skin1"}}}) {
       Scan found = scan;
-      found.file = sss::test::shared_data(scan.file);
+      found.file = shared_data(scan.file);
       if (found.file.empty())
         std::fprintf(stderr, "%s is not in the shared data folder: left out\n", scan.file.c_str());
       else

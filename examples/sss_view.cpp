@@ -85,11 +85,8 @@ Options parse(int argc, char** argv) {
       o.mm_per_unit = sss::cli::number(flag, value());
       if (!(o.mm_per_unit > 0)) throw std::invalid_argument("--mm-per-unit: needs a positive value");
     } else if (flag == "--quality") {
-      const std::string q = value();
-      if (q == "interactive") o.quality = sss::Quality::Interactive;
-      else if (q == "balanced") o.quality = sss::Quality::Balanced;
-      else if (q == "accurate") o.quality = sss::Quality::Accurate;
-      else throw std::invalid_argument("--quality: use interactive, balanced or accurate");
+      if (!sss::qualityFromName(value(), o.quality))
+        throw std::invalid_argument("--quality: use interactive, balanced or accurate");
     } else if (flag == "--samples") {
       o.samples = sss::cli::count(flag, value(), 1e9);
     } else if (flag == "--memory-cap") {

@@ -29,6 +29,7 @@ namespace sss
 namespace
 {
 constexpr int kFresnelTableSize = 256;
+constexpr int kRefinedSamplesPerSample = 8;  // where a cell's samples disagree
 
 void SetFloat3Array(vtkShaderProgram* program, const char* name, const std::vector<Eigen::Vector3d>& v)
 {
@@ -190,8 +191,8 @@ int LitCells::level_height(int light, int level) const
 }
 
 bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
-  const LightMapAtlas& maps, double disc_radius, const LitCellSettings& settings,
-  std::size_t& lit, std::string& error)
+  const LightMapAtlas& maps, double disc_radius, int cell_samples, std::size_t& lit,
+  std::string& error)
 {
   const int lights = static_cast<int>(maps.maps.size());
   allocate(window, list.width(), list.height(), std::max(lights, 1));
@@ -237,8 +238,8 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   list.set(irradiance);
   irradiance->SetUniformi("fresnelTable", fresnel_->GetTextureUnit());
   irradiance->SetUniformi("fresnelTableSize", kFresnelTableSize);
-  irradiance->SetUniformi("cellSamples", settings.cell_samples);
-  irradiance->SetUniformi("cellRefinedSamples", settings.cell_refined_samples);
+  irradiance->SetUniformi("cellSamples", cell_samples);
+  irradiance->SetUniformi("cellRefinedSamples", kRefinedSamplesPerSample * cell_samples);
   for (int l = 0; l < lights; ++l)
   {
     irradiance->SetUniformi("light", l);

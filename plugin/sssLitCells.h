@@ -28,12 +28,6 @@ namespace sss
 class SurfelList;
 struct LightMapAtlas;
 
-struct LitCellSettings
-{
-  int cell_samples = 0;          // per cell and light, for its irradiance
-  int cell_refined_samples = 0;  // where those disagree (an edge crosses the cell)
-};
-
 class LitCells
 {
 public:
@@ -44,10 +38,12 @@ public:
 
   // The Fresnel table of the material's eta.
   void bake(vtkOpenGLRenderWindow* window, const Material& material);
-  // E and the source pyramids for the lights of `maps`; `disc_radius` (mm) bounds the
-  // curvature that lifts a cell's samples. `lit` counts the lit cells over all lights.
+  // E and the source pyramids for the lights of `maps`, from `cell_samples` points per cell
+  // and light (eight times as many where they disagree: an edge crosses the cell);
+  // `disc_radius` (mm) bounds the curvature that lifts a cell's samples. `lit` counts the lit
+  // cells over all lights.
   bool light(vtkOpenGLRenderWindow* window, const SurfelList& list, const LightMapAtlas& maps,
-    double disc_radius, const LitCellSettings& settings, std::size_t& lit, std::string& error);
+    double disc_radius, int cell_samples, std::size_t& lit, std::string& error);
 
   // far_field.glsl's and near_field.glsl's textures: the pyramids and E, bound for `program`.
   void activate(vtkShaderProgram* program) const;

@@ -43,7 +43,7 @@ struct SurfelPipeline::Gpu
   NearFarSplit split;
   double support = 0;
   double radius = 0;
-  SurfelPipelineSettings settings;
+  QualitySettings settings;
 
   SurfelList list;
   LitCells cells;
@@ -115,7 +115,7 @@ void SurfelPipeline::release(vtkWindow* window)
 }
 
 bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
-  const Material& material, const SurfelPipelineSettings& settings, SurfelPipelineReport& report,
+  const Material& material, const QualitySettings& settings, SurfelPipelineReport& report,
   std::string& error)
 {
   Gpu& g = *gpu_;
@@ -156,10 +156,8 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
 {
   Gpu& g = *gpu_;
   Stopwatch clock;
-  LitCellSettings cell_settings;
-  cell_settings.cell_samples = g.settings.cell_samples;
-  cell_settings.cell_refined_samples = g.settings.cell_refined_samples;
-  if (!g.cells.light(window, g.list, maps, g.radius, cell_settings, report.lit_cells, error))
+  if (!g.cells.light(window, g.list, maps, g.radius, g.settings.cell_samples, report.lit_cells,
+        error))
   {
     return false;
   }

@@ -12,6 +12,7 @@
 #include "local_surfels.h"
 #include "material.h"
 #include "near_far_split.h"
+#include "quality_settings.h"
 #include "sssLightMaps.h"
 
 #include "vtkNew.h"
@@ -34,15 +35,6 @@ class vtkWindow;
 namespace sss
 {
 
-// Filled from vtkSubsurfacePass's settings, where their defaults are.
-struct SurfelPipelineSettings
-{
-  int cell_samples = 0;          // per cell and light, for its irradiance
-  int cell_refined_samples = 0;  // where those disagree (an edge crosses the cell)
-  double opening_angle = 0;      // far-field walk
-  double max_group_diffusion_lengths = 0;
-};
-
 struct SurfelPipelineReport
 {
   double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
@@ -61,7 +53,7 @@ public:
   // The CPU bake and its uploads; `local` must carry its surface fit (and its albedo, or none
   // for white).
   bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
-    const SurfelPipelineSettings& settings, SurfelPipelineReport& report, std::string& error);
+    const QualitySettings& settings, SurfelPipelineReport& report, std::string& error);
 
   // Irradiance, source pyramids and B at every surfel for the given light maps.
   bool light(vtkOpenGLRenderWindow* window, const LightMapAtlas& maps, bool finish,

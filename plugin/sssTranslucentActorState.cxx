@@ -66,7 +66,7 @@ void TranslucentActorState::release(vtkWindow* window)
 
 bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
   vtkMTimeType surfels_time, const Material& material, bool albedo_from_colour,
-  const std::vector<GpuLight>& lights, const GpuSettings& settings, bool finish,
+  const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
   StepReport& report, std::string& error)
 {
   std::vector<double> key;
@@ -151,7 +151,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
 }
 
 bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-  bool albedo_from_colour, const GpuSettings& settings, StepReport& report, std::string& error)
+  bool albedo_from_colour, const QualitySettings& settings, StepReport& report, std::string& error)
 {
   Gpu& g = *gpu_;
   g.local = LocalSurfels::from(surfels.cloud, material_.mm_per_unit);
@@ -187,7 +187,7 @@ bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSu
     }
   }
   SurfelPipelineReport step;
-  if (!g.pipeline.bake(window, g.local, material_, settings.pipeline, step, error))
+  if (!g.pipeline.bake(window, g.local, material_, settings, step, error))
   {
     return false;
   }

@@ -7,6 +7,7 @@
 
 #include "dipole.h"
 #include "material.h"
+#include "quality_settings.h"
 #include "sssLightMaps.h"
 #include "sssSurfelPipeline.h"
 #include "sssSurfelPreparation.h"
@@ -30,31 +31,6 @@ class vtkWindow;
 namespace sss
 {
 
-enum class KernelStrategy
-{
-  Paper = 0,   // 512 map, 49 Gaussian taps in a 40 x 40 window at 64^3 grid points
-  NearFar = 1  // each surfel's cell lit; near field by a table, far field by a walk
-};
-
-// Filled from vtkSubsurfacePass's settings, where their defaults are.
-struct GpuSettings
-{
-  KernelStrategy strategy = KernelStrategy::NearFar;
-  int grid_level = 0;     // Paper: 2^level grid points per axis, 0: its 64
-  int max_map_size = 0;
-  double texel_per_radius = 0;
-  SurfelPipelineSettings pipeline;
-  bool operator==(const GpuSettings& o) const
-  {
-    const SurfelPipelineSettings &a = pipeline, &b = o.pipeline;
-    return strategy == o.strategy && grid_level == o.grid_level &&
-      max_map_size == o.max_map_size && texel_per_radius == o.texel_per_radius &&
-      a.cell_samples == b.cell_samples && a.cell_refined_samples == b.cell_refined_samples &&
-      a.opening_angle == b.opening_angle &&
-      a.max_group_diffusion_lengths == b.max_group_diffusion_lengths;
-  }
-};
-
 struct StepReport
 {
   bool bake = false, illumination = false, surfels = false;
@@ -76,7 +52,7 @@ public:
   // that the reported times are real. Returns false with `error` set when it cannot run.
   bool update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
     vtkMTimeType surfels_time, const Material& material, bool albedo_from_colour,
-    const std::vector<GpuLight>& lights, const GpuSettings& settings, bool finish,
+    const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
     StepReport& report, std::string& error);
 
   // The per-surfel B texture (RGBA32F, surfel i at texel (i % width, i / width)).
@@ -97,13 +73,13 @@ private:
   struct Gpu;
   // The bake: what changes with the geometry, the material or a setting.
   bool bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-    bool albedo_from_colour, const GpuSettings& settings, StepReport& report, std::string& error);
+    bool albedo_from_colour, const QualitySettings& settings, StepReport& report, std::string& error);
 
   Gpu* gpu_;
   Material material_;
   std::vector<double> material_key_;
   vtkMTimeType geometry_time_ = 0;
-  GpuSettings geometry_settings_;
+  QualitySettings geometry_settings_;
   bool geometry_albedo_ = false;
   std::vector<GpuLight> lights_;
   bool valid_ = false;

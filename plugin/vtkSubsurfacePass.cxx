@@ -9,6 +9,7 @@
 #include "vtkSurfelMapper.h"
 #include "vtkTranslucentMaterial.h"
 
+#include "quality_settings.h"
 #include "stopwatch.h"
 
 #include "vtkActor.h"
@@ -71,9 +72,47 @@ struct vtkSubsurfacePass::Internals
   }
 };
 
+namespace
+{
+sss::QualitySettings SettingsOf(vtkSubsurfacePass* pass)
+{
+  sss::QualitySettings q;
+  q.strategy = pass->GetKernelStrategy() == vtkSubsurfacePass::PAPER
+    ? sss::KernelStrategy::Paper
+    : sss::KernelStrategy::NearFar;
+  q.texel_per_radius = pass->GetTexelPerRadius();
+  q.max_map_size = pass->GetMaxMapSize();
+  q.cell_samples = pass->GetCellSamples();
+  q.opening_angle = pass->GetOpeningAngle();
+  q.max_group_diffusion_lengths = pass->GetMaxGroupDiffusionLengths();
+  q.grid_level = pass->GetGridLevel();
+  return q;
+}
+
+void Apply(vtkSubsurfacePass* pass, const sss::QualitySettings& q)
+{
+  pass->SetKernelStrategy(
+    q.strategy == sss::KernelStrategy::Paper ? vtkSubsurfacePass::PAPER : vtkSubsurfacePass::NEAR_FAR);
+  pass->SetTexelPerRadius(q.texel_per_radius);
+  pass->SetMaxMapSize(q.max_map_size);
+  pass->SetCellSamples(q.cell_samples);
+  pass->SetOpeningAngle(q.opening_angle);
+  pass->SetMaxGroupDiffusionLengths(q.max_group_diffusion_lengths);
+  pass->SetGridLevel(q.grid_level);
+}
+}
+
 vtkSubsurfacePass::vtkSubsurfacePass()
   : Impl(new Internals)
 {
+  const sss::QualitySettings defaults;
+  this->KernelStrategy = defaults.strategy == sss::KernelStrategy::Paper ? PAPER : NEAR_FAR;
+  this->TexelPerRadius = defaults.texel_per_radius;
+  this->MaxMapSize = defaults.max_map_size;
+  this->CellSamples = defaults.cell_samples;
+  this->OpeningAngle = defaults.opening_angle;
+  this->MaxGroupDiffusionLengths = defaults.max_group_diffusion_lengths;
+  this->GridLevel = defaults.grid_level;
   vtkNew<vtkRenderStepsPass> steps;
   this->SetDelegatePass(steps);
   this->Impl->Linear->SetNumberOfComponents(3);
@@ -182,16 +221,7 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
 {
   Internals& impl = *this->Impl;
   const std::vector<std::pair<Eigen::Vector3d, sss::Rgb>>& lights = impl.Lights;
-  sss::GpuSettings settings;
-  settings.strategy = this->KernelStrategy == PAPER ? sss::KernelStrategy::Paper
-                                                    : sss::KernelStrategy::NearFar;
-  settings.grid_level = this->GridLevel;
-  settings.max_map_size = this->MaxMapSize;
-  settings.texel_per_radius = this->TexelPerRadius;
-  settings.pipeline.cell_samples = this->CellSamples;
-  settings.pipeline.cell_refined_samples = 8 * this->CellSamples;
-  settings.pipeline.opening_angle = this->OpeningAngle;
-  settings.pipeline.max_group_diffusion_lengths = this->MaxGroupDiffusionLengths;
+  const sss::QualitySettings settings = SettingsOf(this);
 
   // Steps 1-2 for each translucent actor, where their inputs changed.
   impl.Ready.clear();
@@ -578,24 +608,36 @@ void vtkSubsurfacePass::ReleaseGraphicsResources(vtkWindow* w)
 
 const char* vtkSubsurfacePass::GetKernelStrategyAsString()
 {
-  return this->KernelStrategy == PAPER ? "paper" : "near-far";
+  return sss::strategy_name(SettingsOf(this).strategy);
 }
 
 bool vtkSubsurfacePass::SetKernelStrategyByName(const std::string& name)
 {
-  if (name == "paper")
+  sss::QualitySettings q = SettingsOf(this);
+  if (!sss::strategy_from_name(name, q.strategy))
   {
-    this->SetKernelStrategyToPaper();
+    return false;
   }
-  else if (name == "near-far")
+  Apply(this, q);
+  return true;
+}
+
+bool vtkSubsurfacePass::SetQualityPreset(const std::string& name)
+{
+  try
   {
-    this->SetKernelStrategyToNearFar();
+    Apply(this, sss::QualitySettings::preset(name));
   }
-  else
+  catch (const std::invalid_argument&)
   {
     return false;
   }
   return true;
+}
+
+std::string vtkSubsurfacePass::GetQualityPresetAsString()
+{
+  return SettingsOf(this).preset_name();
 }
 
 void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
@@ -610,6 +652,7 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridLevel: " << this->GridLevel << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "CaptureLinearImage: " << this->CaptureLinearImage << "\n";
+  os << indent << "QualityPreset: " << this->GetQualityPresetAsString() << "\n";
   os << indent << "MeasureStepTimes: " << this->MeasureStepTimes << "\n";
   os << indent << "Runs (bake, illumination, surfels, view): " << this->BakeRuns << " "
      << this->IlluminationRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";

@@ -69,6 +69,18 @@ public:
 
   ///@{
   /**
+   * Named presets of the settings below (and NEAR_FAR): "interactive" (16 cell samples,
+   * maps of at most 2048 texels, opening angle 0.6), "balanced" (the defaults) and "accurate"
+   * (128 cell samples, opening angle 0.3). Costs and errors of each: docs/benchmark/bench.md.
+   * SetQualityPreset returns false (and changes nothing) for an unknown name;
+   * GetQualityPresetAsString returns "" when the settings match no preset.
+   */
+  bool SetQualityPreset(const std::string& name);
+  std::string GetQualityPresetAsString();
+  ///@}
+
+  ///@{
+  /**
    * Light maps: texel edge over the surfel disc radius (default 0.0625, as the reference's, so
    * each cell is many texels across) and the largest map side (default 4096; a larger scene
    * gets coarser texels). NEAR_FAR's map holds which surfel each texel sees (8 bytes a texel
@@ -205,13 +217,14 @@ protected:
   vtkSubsurfacePass();
   ~vtkSubsurfacePass() override;
 
-  int KernelStrategy = NEAR_FAR;
-  double TexelPerRadius = 0.0625;
-  int MaxMapSize = 4096;
-  int CellSamples = 64;
-  double OpeningAngle = 0.4;
-  double MaxGroupDiffusionLengths = 4.0;
-  int GridLevel = 0;
+  // Their defaults are core/quality_settings.h's, set by the constructor.
+  int KernelStrategy;
+  double TexelPerRadius;
+  int MaxMapSize;
+  int CellSamples;
+  double OpeningAngle;
+  double MaxGroupDiffusionLengths;
+  int GridLevel;
   double Exposure = 1.0;
   bool CaptureLinearImage = false;
   bool MeasureStepTimes = false;

@@ -85,6 +85,24 @@ TEST(RenderInput, BadInputGivesOneMessageNonZeroExitAndNoFile) {
   expect_refused("billion.ply", "billion.ply: its header claims 2000000000 vertices");
 }
 
+// Setting names are checked before anything is loaded or drawn: a wrong one is refused with
+// the names that exist.
+TEST(RenderInput, UnknownSettingNamesAreRefusedWithTheKnownOnes) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--quality fastest", "--quality: 'fastest' is not a quality preset: use interactive, "
+                            "balanced or accurate"},
+      {"--strategy fast", "--strategy: 'fast' is not near-far or paper"}};
+  for (const auto& [flags, words] : cases) {
+    const std::string command = std::string("env -u DISPLAY '") + SSS_RENDER_PATH + "' " + flags +
+                                " --output refused_setting.png 2> refused_setting.err";
+    EXPECT_NE(std::system(command.c_str()), 0) << flags;
+    std::ifstream in("refused_setting.err");
+    const std::string errors((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(errors.find(words), std::string::npos) << errors;
+    EXPECT_FALSE(fs::exists("refused_setting.png")) << flags;
+  }
+}
+
 TEST(RenderInput, OrganisedCloudWithHolesAndColoursRenders) {
   pcl::PointCloud<pcl::PointXYZRGB> dome(48, 48);  // a coloured cap seen from the sensor
   for (int v = 0; v < 48; ++v)

@@ -24,22 +24,6 @@
 namespace sss {
 namespace {
 
-struct QualitySettings {
-  int cell_samples;
-  int max_map;
-  double opening_angle;
-};
-
-QualitySettings settings_of(Quality quality) {
-  switch (quality) {
-    case Quality::Interactive: return {16, 2048, 0.6};
-    case Quality::Balanced: break;
-    case Quality::Accurate: return {128, 4096, 0.3};
-  }
-  vtkNew<vtkSubsurfacePass> defaults;
-  return {defaults->GetCellSamples(), defaults->GetMaxMapSize(), defaults->GetOpeningAngle()};
-}
-
 // The renderers PCLVisualizer means by a viewport: all for 0, else the viewport-th one.
 std::vector<vtkSmartPointer<vtkRenderer>> renderers_of(pcl::visualization::PCLVisualizer& viewer,
                                                        int viewport) {
@@ -72,6 +56,16 @@ const char* qualityName(Quality quality) {
     case Quality::Accurate: break;
   }
   return "accurate";
+}
+
+bool qualityFromName(const std::string& name, Quality& quality) {
+  for (Quality q : {Quality::Interactive, Quality::Balanced, Quality::Accurate}) {
+    if (name == qualityName(q)) {
+      quality = q;
+      return true;
+    }
+  }
+  return false;
 }
 
 TranslucentCloud::TranslucentCloud(pcl::visualization::PCLVisualizer& viewer, std::string id,
@@ -163,12 +157,7 @@ void TranslucentCloud::setLights(const std::vector<Eigen::Vector3d>& towards_lig
 
 void TranslucentCloud::setQuality(Quality quality) {
   quality_ = quality;
-  const QualitySettings q = settings_of(quality);
-  for (const auto& pass : passes_) {
-    pass->SetCellSamples(q.cell_samples);
-    pass->SetMaxMapSize(q.max_map);
-    pass->SetOpeningAngle(q.opening_angle);
-  }
+  for (const auto& pass : passes_) pass->SetQualityPreset(qualityName(quality));
 }
 
 void TranslucentCloud::setExposure(double exposure) {

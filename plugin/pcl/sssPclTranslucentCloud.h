@@ -27,13 +27,12 @@ namespace sss {
 
 // How B is summed when a light, the geometry or the material changes (the camera alone never
 // re-runs it), trading accuracy for time. Costs and errors per setting are in
-// docs/benchmark/bench.md.
-enum class Quality {
-  Interactive,  // 16 samples per cell, far-field opening angle 0.6, maps of at most 2048 texels
-  Balanced,     // the pass's defaults (64 samples, opening angle 0.4, 4096 texels)
-  Accurate,     // 128 samples per cell, opening angle 0.3, maps of at most 4096 texels
-};
+// docs/benchmark/bench.md. Each is vtkSubsurfacePass's quality preset of the same name
+// (core/quality_settings.h); Balanced is the pass's defaults.
+enum class Quality { Interactive, Balanced, Accurate };
 const char* qualityName(Quality quality);
+// False for a name that is not a quality's.
+bool qualityFromName(const std::string& name, Quality& quality);
 
 struct TranslucentCloudOptions {
   std::string material = "marble";  // a vtkTranslucentMaterial preset

@@ -32,8 +32,20 @@ class Wrapping(unittest.TestCase):
         window.AddRenderer(renderer)
         self.assertIs(window.GetRenderers().GetFirstRenderer(), renderer)
 
-    def test_classes_live_in_sss_sssTranslucency(self):
+    def test_classes_live_in_their_modules(self):
         self.assertEqual(sss.vtkSurfelMapper.__module__, "sss.sssTranslucency")
+        self.assertEqual(sss.vtkEGLSurfacelessRenderWindow.__module__, "sss.sssHeadless")
+
+    def test_quality_presets_by_name(self):
+        subsurface = sss.vtkSubsurfacePass()
+        self.assertEqual(subsurface.GetQualityPresetAsString(), "balanced")
+        self.assertTrue(subsurface.SetQualityPreset("accurate"))
+        self.assertEqual(subsurface.GetCellSamples(), 128)
+        self.assertAlmostEqual(subsurface.GetOpeningAngle(), 0.3)
+        self.assertFalse(subsurface.SetQualityPreset("fastest"))
+        self.assertEqual(subsurface.GetQualityPresetAsString(), "accurate")
+        subsurface.SetCellSamples(32)
+        self.assertEqual(subsurface.GetQualityPresetAsString(), "")
 
 
 if __name__ == "__main__":

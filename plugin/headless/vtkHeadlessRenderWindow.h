@@ -26,12 +26,12 @@
 #ifndef vtkHeadlessRenderWindow_h
 #define vtkHeadlessRenderWindow_h
 
-#include "sssTranslucencyModule.h"
+#include "sssHeadlessModule.h"
 #include "vtkGenericOpenGLRenderWindow.h"
 
 #include <string> // for std::string
 
-class SSSTRANSLUCENCY_EXPORT vtkHeadlessRenderWindow : public vtkGenericOpenGLRenderWindow
+class SSSHEADLESS_EXPORT vtkHeadlessRenderWindow : public vtkGenericOpenGLRenderWindow
 {
 public:
   vtkTypeMacro(vtkHeadlessRenderWindow, vtkGenericOpenGLRenderWindow);

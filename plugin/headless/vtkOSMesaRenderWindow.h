@@ -35,13 +35,13 @@
 #ifndef vtkOSMesaRenderWindow_h
 #define vtkOSMesaRenderWindow_h
 
-#include "sssTranslucencyModule.h"
+#include "sssHeadlessModule.h"
 #include "vtkHeadlessRenderWindow.h"
 
 #include <string> // for std::string
 #include <vector> // for std::vector
 
-class SSSTRANSLUCENCY_EXPORT vtkOSMesaRenderWindow : public vtkHeadlessRenderWindow
+class SSSHEADLESS_EXPORT vtkOSMesaRenderWindow : public vtkHeadlessRenderWindow
 {
 public:
   static vtkOSMesaRenderWindow* New();

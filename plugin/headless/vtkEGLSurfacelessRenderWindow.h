@@ -18,10 +18,10 @@
 #ifndef vtkEGLSurfacelessRenderWindow_h
 #define vtkEGLSurfacelessRenderWindow_h
 
-#include "sssTranslucencyModule.h"
+#include "sssHeadlessModule.h"
 #include "vtkHeadlessRenderWindow.h"
 
-class SSSTRANSLUCENCY_EXPORT vtkEGLSurfacelessRenderWindow : public vtkHeadlessRenderWindow
+class SSSHEADLESS_EXPORT vtkEGLSurfacelessRenderWindow : public vtkHeadlessRenderWindow
 {
 public:
   static vtkEGLSurfacelessRenderWindow* New();
