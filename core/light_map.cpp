@@ -7,21 +7,90 @@
 
 namespace sss {
 
-void DirectionalLight::validate() const {
+void Light::validate() const {
   if (!direction.allFinite() || !(direction.norm() > 0.0)) {
     std::ostringstream msg;
-    msg << "[sss::DirectionalLight] direction (" << direction.transpose()
+    msg << "[sss::Light] direction (" << direction.transpose()
         << ") must be finite and non-zero";
     throw std::invalid_argument(msg.str());
   }
   if (!std::isfinite(irradiance) || irradiance < 0.0) {
     std::ostringstream msg;
-    msg << "[sss::DirectionalLight] irradiance = " << irradiance << " must be finite and >= 0";
+    msg << "[sss::Light] irradiance = " << irradiance << " must be finite and >= 0";
+    throw std::invalid_argument(msg.str());
+  }
+  if (positional && (!position.allFinite() || !attenuation.allFinite() ||
+                     attenuation.minCoeff() < 0.0 || !(attenuation.sum() > 0.0) ||
+                     !std::isfinite(cone_angle) || !std::isfinite(exponent) || exponent < 0.0)) {
+    std::ostringstream msg;
+    msg << "[sss::Light] a positional light needs a finite position, attenuation coefficients "
+           ">= 0, not all 0, and a finite cone angle and exponent >= 0 (position ("
+        << position.transpose() << "), attenuation (" << attenuation.transpose()
+        << "), cone " << cone_angle << ", exponent " << exponent << ")";
     throw std::invalid_argument(msg.str());
   }
 }
 
-LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<DirectionalLight>& lights,
+bool Light::operator==(const Light& o) const {
+  return direction == o.direction && irradiance == o.irradiance && positional == o.positional &&
+         position == o.position && attenuation == o.attenuation && cone_angle == o.cone_angle &&
+         exponent == o.exponent;
+}
+
+LocalLight LocalLight::of(const Light& light, const LocalFrame& frame) {
+  LocalLight local;
+  local.positional = light.positional;
+  local.direction = light.direction.normalized();
+  local.irradiance = light.irradiance;
+  if (light.positional) {
+    local.position = frame.to_mm(light.position);
+    const double unit = frame.mm_per_unit;
+    local.attenuation = {light.attenuation[0], light.attenuation[1] / unit,
+                         light.attenuation[2] / (unit * unit)};
+    if (light.cone_angle < 90.0) {
+      local.cone_cos = std::cos(light.cone_angle * 3.14159265358979323846 / 180.0);
+      local.exponent = light.exponent;
+    }
+  }
+  return local;
+}
+
+Eigen::Vector3d LocalLight::towards(const Eigen::Vector3d& y) const {
+  return positional ? (position - y).normalized() : direction;
+}
+
+double LocalLight::irradiance_at(const Eigen::Vector3d& y) const {
+  if (!positional) return irradiance;
+  const double d = (position - y).norm();
+  double spot = 1.0;
+  if (cone_cos > -1.0) {
+    const double c = (position - y).dot(direction) / std::max(d, 1e-300);
+    spot = c >= cone_cos ? std::pow(c, exponent) : 0.0;
+  }
+  return spot * irradiance / (attenuation[0] + d * (attenuation[1] + d * attenuation[2]));
+}
+
+bool LightView::texel_of(const Eigen::Vector3d& y, int& i, int& j) const {
+  double a = 0.0, b = 0.0;
+  if (from_point) {
+    if (!perspective.project(y, a, b)) return false;
+  } else {
+    a = (y.dot(ortho.u) - ortho.corner.x()) / ortho.pixel;
+    b = (y.dot(ortho.v) - ortho.corner.y()) / ortho.pixel;
+  }
+  if (!(a >= 0.0 && b >= 0.0 && a < width() && b < height())) return false;
+  i = static_cast<int>(a);
+  j = static_cast<int>(b);
+  return true;
+}
+
+Eigen::Vector3d LightView::hit_point(const DiscHits& hits, int i, int j) const {
+  if (!from_point) return hits.hit_point(ortho, i, j);
+  return perspective.eye +
+         hits.depth[static_cast<std::size_t>(j) * perspective.width + i] * perspective.ray(i, j);
+}
+
+LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<Light>& lights,
                             const LightMapSettings& settings) {
   if (!(settings.texel_per_radius > 0.0) || !std::isfinite(settings.texel_per_radius) ||
       settings.max_map_size < 1 || settings.max_map_size > 65535) {
@@ -33,24 +102,33 @@ LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<Direc
   }
   const double texel = settings.texel_per_radius * surfels.radius;
   LightMaps out;
-  for (const DirectionalLight& light : lights) {
+  for (const Light& light : lights) {
     light.validate();
-    const Eigen::Vector3d l = light.direction.normalized();
-    const OrthoView map = OrthoView::fit_pixel(surfels.positions, surfels.max_disc_radius(), l,
-                                               Eigen::Vector3d::UnitZ(), texel,
-                                               settings.max_map_size);
-    out.maps.push_back(map);
-    out.lights.push_back({l, light.irradiance});
-    out.hits.push_back(rasterize_discs(map, surfels.positions, surfels.normals, surfels.radius,
-                                       surfels.disc_radii));
+    const LocalLight local = LocalLight::of(light, surfels.frame);
+    LightView view;
+    view.from_point = local.positional;
+    if (view.from_point) {
+      view.perspective = PerspectiveView::fit_pixel(surfels.positions, surfels.max_disc_radius(),
+                                                    local.position, texel, settings.max_map_size);
+      out.hits.push_back(rasterize_discs(view.perspective, surfels.positions, surfels.normals,
+                                         surfels.radius, surfels.disc_radii));
+    } else {
+      view.ortho = OrthoView::fit_pixel(surfels.positions, surfels.max_disc_radius(),
+                                        local.direction, Eigen::Vector3d::UnitZ(), texel,
+                                        settings.max_map_size);
+      out.hits.push_back(rasterize_discs(view.ortho, surfels.positions, surfels.normals,
+                                         surfels.radius, surfels.disc_radii));
+    }
+    out.views.push_back(view);
+    out.lights.push_back(local);
   }
   return out;
 }
 
-SurfacePoint seen_point(const LocalSurfels& surfels, const OrthoView& map, const DiscHits& hits,
+SurfacePoint seen_point(const LocalSurfels& surfels, const LightView& view, const DiscHits& hits,
                         int i, int j) {
-  const std::int32_t s = hits.surfel[static_cast<std::size_t>(j) * map.width + i];
-  const Eigen::Vector3d hit = hits.hit_point(map, i, j);
+  const std::int32_t s = hits.surfel[static_cast<std::size_t>(j) * view.width() + i];
+  const Eigen::Vector3d hit = view.hit_point(hits, i, j);
   if (surfels.curvature.size() != surfels.size()) return {hit, surfels.normals[s]};
   const double limit = 1.0 / surfels.radius;
   return on_local_surface(surfels.positions[s], surfels.normals[s],
@@ -58,15 +136,13 @@ SurfacePoint seen_point(const LocalSurfels& surfels, const OrthoView& map, const
                           hit - surfels.positions[s]);
 }
 
-bool light_reaches(const LocalSurfels& surfels, const OrthoView& map, const DiscHits& hits,
+bool light_reaches(const LocalSurfels& surfels, const LightView& view, const DiscHits& hits,
                    const Eigen::Vector3d& towards_light, const Eigen::Vector3d& y,
                    double cos_theta, double thickness) {
-  const double u = (y.dot(map.u) - map.corner.x()) / map.pixel;
-  const double v = (y.dot(map.v) - map.corner.y()) / map.pixel;
-  if (!(u >= 0.0 && v >= 0.0 && u < map.width && v < map.height)) return true;
-  const int i = static_cast<int>(u), j = static_cast<int>(v);
-  if (hits.surfel[static_cast<std::size_t>(j) * map.width + i] < 0) return true;
-  const SurfacePoint seen = seen_point(surfels, map, hits, i, j);
+  int i = 0, j = 0;
+  if (!view.texel_of(y, i, j)) return true;
+  if (hits.surfel[static_cast<std::size_t>(j) * view.width() + i] < 0) return true;
+  const SurfacePoint seen = seen_point(surfels, view, hits, i, j);
   const double along = distance_to_seen_surface(y, towards_light, seen.position, seen.normal);
   return std::fabs(along) <= visibility_tolerance(thickness, cos_theta);
 }

@@ -151,7 +151,7 @@ std::string header_mismatch(WordReader& in, const ReferenceKey& key) {
 }  // namespace
 
 ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material,
-                              const std::vector<DirectionalLight>& lights,
+                              const std::vector<Light>& lights,
                               const ReferenceSettings& settings) {
   Fnv1a64 h;
   h.add_word(kReferenceCacheVersion);
@@ -165,9 +165,15 @@ ReferenceKey ReferenceKey::of(const SurfelCloud& cloud, const Material& material
   h.add(material.eta);
   h.add(material.mm_per_unit);
   h.add_word(lights.size());
-  for (const DirectionalLight& light : lights) {
+  for (const Light& light : lights) {
     h.add(light.direction);
     h.add(light.irradiance);
+    if (light.positional) {  // directional lights keep the keys they had
+      h.add(light.position);
+      h.add(light.attenuation);
+      h.add(light.cone_angle);
+      h.add(light.exponent);
+    }
   }
   h.add(settings.light_map.texel_per_radius);
   h.add_word(signed_word(settings.light_map.max_map_size));
@@ -302,7 +308,7 @@ void store_cached_reference(const std::filesystem::path& dir, const ReferenceKey
 
 SurfelRadiance cached_reference(const std::filesystem::path& dir, const SurfelCloud& cloud,
                                 const Material& material,
-                                const std::vector<DirectionalLight>& lights,
+                                const std::vector<Light>& lights,
                                 const ReferenceSettings& settings,
                                 ReferenceCacheStatus* status) {
   ReferenceCacheStatus ignored;

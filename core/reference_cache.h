@@ -29,7 +29,7 @@ struct ReferenceKey {
   std::string label;        // readable prefix of the file name: the material's name
 
   static ReferenceKey of(const SurfelCloud& cloud, const Material& material,
-                         const std::vector<DirectionalLight>& lights,
+                         const std::vector<Light>& lights,
                          const ReferenceSettings& settings);
 
   // "<label>-<hash as 16 hex digits>.sssref"; the label keeps only [A-Za-z0-9_-].
@@ -62,7 +62,7 @@ struct ReferenceCacheStatus {
 // without the cache. Throws what render_reference throws.
 SurfelRadiance cached_reference(const std::filesystem::path& dir, const SurfelCloud& cloud,
                                 const Material& material,
-                                const std::vector<DirectionalLight>& lights,
+                                const std::vector<Light>& lights,
                                 const ReferenceSettings& settings = {},
                                 ReferenceCacheStatus* status = nullptr);
 

@@ -17,10 +17,10 @@ PointSources cell_sources(const LocalSurfels& surfels, const std::vector<double>
                           const LightMaps& light, const SurfelIrradiance& E) {
   PointSources sources;
   for (std::size_t li = 0; li < light.size(); ++li) {
-    const Eigen::Vector3d& l = light.lights[li].direction;
     for (std::size_t j = 0; j < surfels.size(); ++j) {
       const Rgb& e = E[li][j];
       if (!(e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0) || !(area[j] > 0.0)) continue;
+      const Eigen::Vector3d l = light.lights[li].towards(surfels.positions[j]);
       const Eigen::Vector3d n = surfels.normals[j].dot(l) < 0.0 ? Eigen::Vector3d(-surfels.normals[j])
                                                                 : surfels.normals[j];
       Eigen::Vector3d t1, t2;
@@ -37,7 +37,7 @@ PointSources cell_sources(const LocalSurfels& surfels, const std::vector<double>
 }
 
 ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& material,
-                                 const std::vector<DirectionalLight>& lights,
+                                 const std::vector<Light>& lights,
                                  const ReferenceSettings& settings)
     : dipole_(material), tree_settings_(settings.tree) {
   for (std::size_t i : settings.receivers) {
@@ -71,10 +71,10 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
   stats_.seconds_light = clock.lap();
   stats_.surfels = surfels_.size();
   stats_.lit_cells = sources_.size();
-  if (!maps_.maps.empty()) {
-    stats_.texel_mm = maps_.maps[0].pixel;
-    stats_.map_width = maps_.maps[0].width;
-    stats_.map_height = maps_.maps[0].height;
+  if (!maps_.views.empty()) {
+    stats_.texel_mm = maps_.views[0].texel_mm();
+    stats_.map_width = maps_.views[0].width();
+    stats_.map_height = maps_.views[0].height();
   }
   stats_.near_entries = weights_.source.size();
   stats_.near_reach_mm = split_.reach;
@@ -108,7 +108,7 @@ Rgb ReferenceSolver::sources_B_at(const Eigen::Vector3d& scene_point, double bey
 }
 
 SurfelRadiance render_reference(const SurfelCloud& cloud, const Material& material,
-                                const std::vector<DirectionalLight>& lights,
+                                const std::vector<Light>& lights,
                                 const ReferenceSettings& settings) {
   const ReferenceSolver solver(cloud, material, lights, settings);
   SurfelRadiance result;

@@ -59,7 +59,7 @@ class ReferenceSolver {
   // The cloud must have been validated (SurfelCloud::validate); throws std::invalid_argument
   // for a bad material, light or setting.
   ReferenceSolver(const SurfelCloud& cloud, const Material& material,
-                  const std::vector<DirectionalLight>& lights,
+                  const std::vector<Light>& lights,
                   const ReferenceSettings& settings = {});
 
   // B (eq. 17) at the k-th receiver asked for (the k-th surfel when none were named).
@@ -104,7 +104,7 @@ PointSources cell_sources(const LocalSurfels& surfels, const std::vector<double>
                           const LightMaps& light, const SurfelIrradiance& E);
 
 SurfelRadiance render_reference(const SurfelCloud& cloud, const Material& material,
-                                const std::vector<DirectionalLight>& lights,
+                                const std::vector<Light>& lights,
                                 const ReferenceSettings& settings = {});
 
 }  // namespace sss

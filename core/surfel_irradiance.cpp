@@ -31,15 +31,14 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
   const double limit = 1.0 / surfels.radius;
   SurfelIrradiance E(light.size(), std::vector<Rgb>(n, Rgb{0.0, 0.0, 0.0}));
   for (std::size_t li = 0; li < light.size(); ++li) {
-    const Eigen::Vector3d& l = light.lights[li].direction;
-    const double irradiance = light.lights[li].irradiance;
-    if (irradiance == 0.0) continue;
+    const LocalLight& source = light.lights[li];
+    if (source.irradiance == 0.0) continue;
     const long count = static_cast<long>(n);
     std::vector<Rgb>& out = E[li];
 #pragma omp parallel for schedule(dynamic, 256) default(none) \
-    shared(surfels, area, material, light, out, l, irradiance, count, samples, refined, limit, li)
+    shared(surfels, area, material, light, out, source, count, samples, refined, limit, li)
     for (long j = 0; j < count; ++j) {
-      const double side = surfels.normals[j].dot(l) < 0.0 ? -1.0 : 1.0;
+      const double side = surfels.normals[j].dot(source.towards(surfels.positions[j])) < 0.0 ? -1.0 : 1.0;
       const Eigen::Vector3d n = side * surfels.normals[j];
       const double kappa = side * std::clamp(surfels.curvature[j], -limit, limit);
       const double thickness =
@@ -57,14 +56,16 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
           const double angle = turn + kGoldenAngle * s;
           const SurfacePoint y = on_local_surface(
               surfels.positions[j], n, kappa, rho * (std::cos(angle) * t1 + std::sin(angle) * t2));
+          const Eigen::Vector3d l = source.towards(y.position);
           const double cos_i = y.normal.dot(l);
           if (!(cos_i > 0.0)) continue;
-          if (!light_reaches(surfels, light.maps[li], light.hits[li], l, y.position, cos_i,
+          if (!light_reaches(surfels, light.views[li], light.hits[li], l, y.position, cos_i,
                              thickness))
             continue;
           ++lit;
+          const double e = source.irradiance_at(y.position);
           for (int c = 0; c < 3; ++c)
-            sum[c] += fresnel_transmittance(material.eta[c], cos_i) * cos_i / count;
+            sum[c] += e * fresnel_transmittance(material.eta[c], cos_i) * cos_i / count;
         }
         return sum;
       };
@@ -73,7 +74,7 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
       if (lit > 0 && lit < samples && refined > samples) sum = sample(refined, lit);
       for (int c = 0; c < 3; ++c) {
         const double albedo = surfels.albedo.empty() ? 1.0 : surfels.albedo[j][c];
-        out[j][c] = irradiance * albedo * sum[c];
+        out[j][c] = albedo * sum[c];
       }
     }
   }

@@ -98,6 +98,10 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --scale MM_PER_UNIT       millimetres per scene unit (default 1; 1000 for scans in metres)
   --light-dir X,Y,Z         from the object towards a directional light; repeatable, up to 4
                             (default one light at -0.3,0.5,0.8)
+  --point-light X,Y,Z       a point light at X,Y,Z (scene units), as a positional vtkLight
+                            with no spot cone; repeatable, up to 4 lights in all
+  --light-attenuation A,B,C point lights' irradiance over A + B d + C d^2, d in scene units
+                            (default 1,0,0: none, as VTK's; 0,0,1: the inverse square)
   --light-irradiance V      irradiance of each light (default 1)
   --view-dir X,Y,Z          from the object towards the camera (default 0,-1,0.6)
   --up X,Y,Z                camera up (default 0,0,1)
@@ -203,6 +207,14 @@ Options parse(int argc, char** argv) {
       o.scale = number(flag, value());
     } else if (flag == "--light-dir") {
       o.light_dirs.push_back(direction(flag, value()));
+    } else if (flag == "--point-light") {
+      const auto v = numbers(flag, value(), 3);
+      o.point_lights.emplace_back(v[0], v[1], v[2]);
+    } else if (flag == "--light-attenuation") {
+      const auto v = numbers(flag, value(), 3);
+      o.light_attenuation = Eigen::Vector3d(v[0], v[1], v[2]);
+      if (o.light_attenuation.minCoeff() < 0.0 || !(o.light_attenuation.sum() > 0.0))
+        throw std::invalid_argument(flag + ": needs three values >= 0, not all 0");
     } else if (flag == "--light-irradiance") {
       o.light_irradiance = number(flag, value());
     } else if (flag == "--view-dir") {
@@ -297,10 +309,26 @@ Options parse(int argc, char** argv) {
       throw std::invalid_argument("'" + flag + "': only one input file can be given");
     }
   }
-  if (o.light_dirs.empty()) o.light_dirs.emplace_back(-0.3, 0.5, 0.8);
-  if (o.light_dirs.size() > 4)
-    throw std::invalid_argument("--light-dir: at most 4 lights are supported");
+  if (o.light_dirs.empty() && o.point_lights.empty()) o.light_dirs.emplace_back(-0.3, 0.5, 0.8);
+  if (o.light_dirs.size() + o.point_lights.size() > 4)
+    throw std::invalid_argument("--light-dir, --point-light: at most 4 lights are supported");
   return o;
+}
+
+std::vector<Light> lights_of(const Options& o, const Eigen::Vector3d& centre) {
+  std::vector<Light> lights;
+  for (const auto& d : o.light_dirs) lights.push_back({d, o.light_irradiance});
+  for (const auto& p : o.point_lights) {
+    Light light;
+    light.positional = true;
+    light.position = p;
+    light.direction = (p - centre).norm() > 0.0 ? Eigen::Vector3d((p - centre).normalized())
+                                                : Eigen::Vector3d::UnitZ();
+    light.attenuation = o.light_attenuation;
+    light.irradiance = o.light_irradiance;
+    lights.push_back(light);
+  }
+  return lights;
 }
 
 }  // namespace sss::cli

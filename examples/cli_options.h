@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "light_map.h"
 #include "material.h"
 #include "surfel_cloud.h"
 
@@ -26,6 +27,9 @@ struct Options {
   double eta = 1.3;
   double scale = 1.0;  // mm per scene unit
   std::vector<Eigen::Vector3d> light_dirs;
+  std::vector<Eigen::Vector3d> point_lights;   // positions, scene units
+  Eigen::Vector3d light_attenuation{1, 0, 0};  // of point lights, as VTK's
+
   double light_irradiance = 1.0;
   Eigen::Vector3d view_dir{0.0, -1.0, 0.6};
   Eigen::Vector3d up{0.0, 0.0, 1.0};
@@ -50,6 +54,10 @@ struct Options {
 
 // Throws std::invalid_argument with a message naming the flag and what is wrong.
 Options parse(int argc, char** argv);
+
+// The lights the options ask for: the directional ones, then the point lights aimed at
+// `centre`.
+std::vector<Light> lights_of(const Options& o, const Eigen::Vector3d& centre);
 
 // The pass's settings given on the command line, onto `pass`; the rest keep its defaults.
 void apply_pass_settings(const Options& o, vtkSubsurfacePass* pass);

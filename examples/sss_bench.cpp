@@ -384,7 +384,7 @@ void print_row(const Row& r) {
 void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
   std::fprintf(stderr, "%s: %zu surfels\n", cloud.name.c_str(), cloud.surfels.size());
   const std::vector<std::string>& materials = cloud.materials.empty() ? o.materials : cloud.materials;
-  const std::vector<sss::DirectionalLight> lights{{cloud.light, 1.0}};
+  const std::vector<sss::Light> lights{{cloud.light, 1.0}};
   auto window = sss::cli::make_render_window("egl", o.size, o.size);
   TranslucentScene scene(window, cloud.surfels,
                          sss::Material::preset(materials[0], 1.3, cloud.mm_per_unit), lights);

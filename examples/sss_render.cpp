@@ -84,6 +84,7 @@ struct Timings {
 };
 
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
+                 const std::vector<sss::Light>& lights,
                  vtkSubsurfacePass* pass, const Timings& t, const std::string& path) {
   sss::write_whole_file(path, [&](std::ostream& out) {
     out << "{\n  \"method\": \"" << o.method << "\",\n  \"backend\": \"" << o.backend
@@ -93,9 +94,13 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << json_rgb(m.sigma_a) << ", \"sigma_s_prime_per_mm\": " << json_rgb(m.sigma_s_prime)
         << ", \"eta\": " << json_rgb(m.eta) << ", \"mm_per_unit\": " << m.mm_per_unit << "},\n"
         << "  \"lights\": [";
-    for (std::size_t i = 0; i < o.light_dirs.size(); ++i)
-      out << (i ? ", " : "") << "{\"direction\": " << json_vector(o.light_dirs[i].normalized())
-          << ", \"irradiance\": " << o.light_irradiance << "}";
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+      out << (i ? ", " : "") << "{\"direction\": " << json_vector(lights[i].direction.normalized());
+      if (lights[i].positional)
+        out << ", \"position\": " << json_vector(lights[i].position)
+            << ", \"attenuation\": " << json_vector(lights[i].attenuation);
+      out << ", \"irradiance\": " << lights[i].irradiance << "}";
+    }
     out << "],\n  \"camera\": {\"view_direction\": " << json_vector(o.view_dir.normalized())
         << ", \"up\": " << json_vector(o.up) << ", \"width\": " << o.width
         << ", \"height\": " << o.height << ", \"projection\": \""
@@ -157,8 +162,7 @@ int run(const Options& o) {
 
   vtkSmartPointer<vtkRenderWindow> window =
       sss::cli::make_render_window(o.backend, o.width, o.height);
-  std::vector<sss::DirectionalLight> lights;
-  for (const auto& d : o.light_dirs) lights.push_back({d, o.light_irradiance});
+  const std::vector<sss::Light> lights = sss::cli::lights_of(o, cloud.bounds().center());
   sss::cli::TranslucentScene scene(window, cloud, material, lights);
   vtkSubsurfacePass* pass = scene.pass;
   vtkActor* actor = scene.actor;
@@ -240,7 +244,7 @@ int run(const Options& o) {
                  timings.light_static / timings.plain_points,
                  timings.light_moving / timings.plain_points);
   }
-  if (!o.stats_json.empty()) write_stats(o, material, cloud, pass, timings, o.stats_json);
+  if (!o.stats_json.empty()) write_stats(o, material, cloud, lights, pass, timings, o.stats_json);
   std::fprintf(stderr, "wrote %s (first frame %.3f s, camera-only frame %.3f s)\n",
                o.output_png.c_str(), timings.first_frame, timings.camera_frame);
   return 0;

@@ -55,17 +55,25 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud) {
 }
 
 TranslucentScene::TranslucentScene(vtkRenderWindow* w, const SurfelCloud& cloud,
-                                   const Material& m, const std::vector<DirectionalLight>& lights)
+                                   const Material& m, const std::vector<Light>& lights)
   : window(w), polydata(to_polydata(cloud)) {
   window->AddRenderer(renderer);
   renderer->SetBackground(0, 0, 0);
   renderer->AutomaticLightCreationOff();
-  for (const DirectionalLight& l : lights) {
+  for (const Light& l : lights) {
     vtkNew<vtkLight> light;
     light->SetLightTypeToSceneLight();
-    light->SetPositional(false);
-    light->SetFocalPoint(0, 0, 0);
-    light->SetPosition(l.direction.data());
+    light->SetPositional(l.positional);
+    if (l.positional) {
+      light->SetPosition(l.position.data());
+      light->SetFocalPoint(Eigen::Vector3d(l.position - l.direction).data());
+      light->SetAttenuationValues(l.attenuation.data());
+      light->SetConeAngle(l.cone_angle);
+      light->SetExponent(l.exponent);
+    } else {
+      light->SetFocalPoint(0, 0, 0);
+      light->SetPosition(l.direction.data());
+    }
     light->SetIntensity(l.irradiance);
     renderer->AddLight(light);
   }

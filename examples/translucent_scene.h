@@ -38,7 +38,7 @@ struct TranslucentScene {
   // The cloud (validated) as a translucent actor lit by `lights`; colours as albedo when the
   // cloud has albedo. The pass measures its step times exactly.
   TranslucentScene(vtkRenderWindow* window, const SurfelCloud& cloud, const Material& m,
-                   const std::vector<DirectionalLight>& lights);
+                   const std::vector<Light>& lights);
   void set_material(const Material& m);
   // Camera at the bounds centre looking back along `view_dir`, fitted to the cloud.
   void aim_camera(const Eigen::Vector3d& centre, const Eigen::Vector3d& view_dir,

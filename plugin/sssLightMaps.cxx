@@ -26,29 +26,15 @@
 namespace sss
 {
 
-LightMapAtlas LightMaps::atlas() const
+LightMapAtlas GpuLightMaps::atlas() const
 {
   LightMapAtlas a;
   a.surfel = surfel_;
-  for (std::size_t l = 0; l < maps_.size(); ++l)
-  {
-    LightMapAtlas::Map m;
-    m.x = map_x_[l];
-    m.y = 0;
-    m.width = maps_[l].width;
-    m.height = maps_[l].height;
-    m.texel = maps_[l].pixel;
-    m.u = maps_[l].u;
-    m.v = maps_[l].v;
-    m.corner = maps_[l].corner;
-    m.towards_light = lights_[l].towards_light;
-    m.irradiance = lights_[l].irradiance;
-    a.maps.push_back(m);
-  }
+  a.maps = maps_;
   return a;
 }
 
-void LightMaps::release(vtkWindow* window)
+void GpuLightMaps::release(vtkWindow* window)
 {
   vao_.release();
   for (auto* t : { &point_, &power_, &normal_, &surfel_, &depth_ })
@@ -63,7 +49,7 @@ void LightMaps::release(vtkWindow* window)
   width_ = height_ = 0;
 }
 
-void LightMaps::allocate(vtkOpenGLRenderWindow* window, bool paper, int width, int height)
+void GpuLightMaps::allocate(vtkOpenGLRenderWindow* window, bool paper, int width, int height)
 {
   // A moving light changes the maps' shapes every frame, and reallocating the textures each
   // time costs more than unused texels.
@@ -104,7 +90,7 @@ void LightMaps::allocate(vtkOpenGLRenderWindow* window, bool paper, int width, i
   height_ = height;
 }
 
-bool LightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers,
+bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers,
   const LocalSurfels& local, const std::vector<GpuLight>& lights, const LightMapRequest& request,
   const Material& material, bool albedo_from_colour, LightMapReport& report, std::string& error)
 {
@@ -119,16 +105,42 @@ bool LightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffe
   const double texel = paper ? 1e-9 : request.texel_per_radius * local.radius;
   const int max_size = paper ? kPaperMapSize : request.max_map_size;
   maps_.clear();
-  map_x_.clear();
-  lights_ = lights;
+  report.notes.clear();
   int atlas_w = 0, atlas_h = 1;
   for (const GpuLight& light : lights)
   {
-    const OrthoView map = OrthoView::fit_pixel(local.positions, local.max_disc_radius(),
-      light.towards_light, Eigen::Vector3d::UnitZ(), texel, max_size);
-    map_x_.push_back(atlas_w);
-    atlas_w += map.width;
-    atlas_h = std::max(atlas_h, map.height);
+    LightMapAtlas::Map map;
+    map.light = LocalLight::of(light.light, local.frame);
+    map.irradiance = light.irradiance;
+    map.view.from_point = map.light.positional;
+    if (map.light.positional && paper)
+    {
+      report.notes.push_back("the paper's method takes a positional light as directional, from "
+                             "its focal point towards it");
+      map.light.positional = map.view.from_point = false;
+    }
+    if (map.view.from_point)
+    {
+      try
+      {
+        map.view.perspective = PerspectiveView::fit_pixel(
+          local.positions, local.max_disc_radius(), map.light.position, texel, max_size);
+      }
+      catch (const std::invalid_argument& e)
+      {
+        report.notes.push_back(std::string(e.what()) +
+          "; it is taken as directional, from its focal point towards it");
+        map.light.positional = map.view.from_point = false;
+      }
+    }
+    if (!map.view.from_point)
+    {
+      map.view.ortho = OrthoView::fit_pixel(local.positions, local.max_disc_radius(),
+        map.light.direction, Eigen::Vector3d::UnitZ(), texel, max_size);
+    }
+    map.x = atlas_w;
+    atlas_w += map.width();
+    atlas_h = std::max(atlas_h, map.height());
     maps_.push_back(map);
   }
   atlas_w = std::max(atlas_w, 1);
@@ -143,9 +155,9 @@ bool LightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffe
     return false;
   }
   allocate(window, paper, atlas_w, atlas_h);
-  report.map_width = maps_.empty() ? 0 : maps_[0].width;
-  report.map_height = maps_.empty() ? 0 : maps_[0].height;
-  report.texel_mm = maps_.empty() ? 0.0 : maps_[0].pixel;
+  report.map_width = maps_.empty() ? 0 : maps_[0].width();
+  report.map_height = maps_.empty() ? 0 : maps_[0].height();
+  report.texel_mm = maps_.empty() ? 0.0 : maps_[0].view.texel_mm();
 
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglViewport viewport(state);
@@ -229,46 +241,69 @@ bool LightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffe
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
   const double reach = 0.5 * local.bounds.extent().norm() + local.max_disc_radius() + 1.0;
-  for (std::size_t l = 0; l < lights.size(); ++l)
+  for (const LightMapAtlas::Map& map : maps_)
   {
-    const OrthoView& map = maps_[l];
+    Eigen::Matrix4d model_to_view, view_to_clip;
     Eigen::Matrix3d rows;
-    rows.row(0) = map.u.transpose();
-    rows.row(1) = map.v.transpose();
-    rows.row(2) = map.w.transpose();
-    Eigen::Matrix4f model_to_view = Eigen::Matrix4f::Identity();
-    model_to_view.block<3, 3>(0, 0) = rows.cast<float>();
+    if (map.view.from_point)
+    {
+      const PerspectiveView& p = map.view.perspective;
+      rows << p.u.transpose(), p.v.transpose(), p.w.transpose();
+      model_to_view = Eigen::Matrix4d::Identity();
+      model_to_view.block<3, 3>(0, 0) = rows;
+      model_to_view.block<3, 1>(0, 3) = -rows * p.eye;
+      // A frustum through the map's image plane at unit distance, from half the nearest
+      // point's distance to past the farthest.
+      const double near = 0.5 * p.nearest, far = (p.eye.norm() + reach) * 2.0;
+      const double left = p.corner.x(), right = p.corner.x() + p.width * p.pixel;
+      const double bottom = p.corner.y(), top = p.corner.y() + p.height * p.pixel;
+      view_to_clip = Eigen::Matrix4d::Zero();
+      view_to_clip(0, 0) = 2.0 / (right - left);
+      view_to_clip(0, 2) = (right + left) / (right - left);
+      view_to_clip(1, 1) = 2.0 / (top - bottom);
+      view_to_clip(1, 2) = (top + bottom) / (top - bottom);
+      view_to_clip(2, 2) = -(far + near) / (far - near);
+      view_to_clip(2, 3) = -2.0 * far * near / (far - near);
+      view_to_clip(3, 2) = -1.0;
+    }
+    else
+    {
+      const OrthoView& o = map.view.ortho;
+      rows << o.u.transpose(), o.v.transpose(), o.w.transpose();
+      model_to_view = Eigen::Matrix4d::Identity();
+      model_to_view.block<3, 3>(0, 0) = rows;
+      view_to_clip = Eigen::Matrix4d::Zero();
+      view_to_clip(0, 0) = 2.0 / (o.width * o.pixel);
+      view_to_clip(0, 3) = -2.0 * o.corner.x() / (o.width * o.pixel) - 1.0;
+      view_to_clip(1, 1) = 2.0 / (o.height * o.pixel);
+      view_to_clip(1, 3) = -2.0 * o.corner.y() / (o.height * o.pixel) - 1.0;
+      view_to_clip(2, 2) = -1.0 / reach;
+      view_to_clip(3, 3) = 1.0;
+    }
+    const Eigen::Matrix4f model_to_view_f = model_to_view.cast<float>();
+    const Eigen::Matrix4f view_to_clip_f = view_to_clip.cast<float>();
     const Eigen::Matrix3f normal_to_view = rows.cast<float>();
     const Eigen::Matrix3f view_to_local = rows.transpose().cast<float>();
-    Eigen::Matrix4d ortho = Eigen::Matrix4d::Zero();
-    ortho(0, 0) = 2.0 / (map.width * map.pixel);
-    ortho(0, 3) = -2.0 * map.corner.x() / (map.width * map.pixel) - 1.0;
-    ortho(1, 1) = 2.0 / (map.height * map.pixel);
-    ortho(1, 3) = -2.0 * map.corner.y() / (map.height * map.pixel) - 1.0;
-    ortho(2, 2) = -1.0 / reach;
-    ortho(3, 3) = 1.0;
-    const Eigen::Matrix4f view_to_clip = ortho.cast<float>();
-    program->SetUniformMatrix4x4("modelToView", model_to_view.data());
+    program->SetUniformMatrix4x4("modelToView", const_cast<float*>(model_to_view_f.data()));
     program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normal_to_view.data()));
-    program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view_to_clip.data()));
+    program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view_to_clip_f.data()));
     program->SetUniformMatrix3x3("viewToLocal", const_cast<float*>(view_to_local.data()));
     program->SetUniformi("perPointRadius", 1);
     program->SetUniformf("modelToViewScale", 1.0f);
-    program->SetUniformi("orthographic", 1);
-    const float towards[3] = { static_cast<float>(lights[l].towards_light.x()),
-      static_cast<float>(lights[l].towards_light.y()),
-      static_cast<float>(lights[l].towards_light.z()) };
+    program->SetUniformi("orthographic", map.view.from_point ? 0 : 1);
+    const float towards[3] = { static_cast<float>(map.light.direction.x()),
+      static_cast<float>(map.light.direction.y()), static_cast<float>(map.light.direction.z()) };
     program->SetUniform3f("towardsLight", towards);
     float power[3];
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < 3; ++c)  // the paper's maps: directional, texels of map.texel_mm()
     {
-      power[c] = static_cast<float>(lights[l].irradiance[c] * map.pixel * map.pixel);
+      power[c] = static_cast<float>(map.irradiance[c] * map.view.texel_mm() * map.view.texel_mm());
     }
     program->SetUniform3f("irradianceArea", power);
     program->SetUniformi("albedoFromColour", albedo_from_colour ? 1 : 0);
     const float albedo_as_is[3] = { 1.0f, 0.0f, 1.0f };  // ambient only: colour = colourMC
     program->SetUniform3f("ambientDiffuse", albedo_as_is);
-    state->vtkglViewport(map_x_[l], 0, map.width, map.height);
+    state->vtkglViewport(map.x, 0, map.width(), map.height());
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(buffers.count));
   }
   vao->Release();

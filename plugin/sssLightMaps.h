@@ -1,11 +1,12 @@
-// Step 1: the light maps. Each light sees the actor's surfels in an orthographic map along its
-// direction, all lights' maps side by side in one atlas. For the surfel pipeline a texel holds
+// Step 1: the light maps. Each light sees the actor's surfels in a map of its own (core's
+// LightView: orthographic along a directional light, perspective from a positional one), all
+// lights' maps side by side in one atlas. For the surfel pipeline a texel holds
 // the list texel of the surfel the light sees first there; for the paper's method, the point,
 // power and normal of eq. 15 (illumination_fs.glsl).
 #ifndef sssLightMaps_h
 #define sssLightMaps_h
 
-#include "disc_raster.h"
+#include "light_map.h"
 #include "material.h"
 #include "sssGpuHelpers.h"
 
@@ -28,14 +29,14 @@ namespace sss
 struct LocalSurfels;
 struct SurfelBuffers;
 
-// A directional light in the actor's local frame.
+// A light in the actor's model frame and units, with its colour.
 struct GpuLight
 {
-  Eigen::Vector3d towards_light;  // unit
+  Light light;  // its irradiance is 1; `irradiance` holds it per channel
   Rgb irradiance;
   bool operator==(const GpuLight& o) const
   {
-    return towards_light == o.towards_light && irradiance == o.irradiance;
+    return light == o.light && irradiance == o.irradiance;
   }
 };
 
@@ -45,12 +46,12 @@ struct LightMapAtlas
   vtkTextureObject* surfel = nullptr;  // the seen surfel's list texel; x < 0: none
   struct Map
   {
-    int x = 0, y = 0, width = 0, height = 0;  // where it lies in the atlas
-    double texel = 0;                         // mm
-    Eigen::Vector3d u, v;                     // image axes, local frame
-    Eigen::Vector2d corner;                   // plane coordinates of its lower-left corner
-    Eigen::Vector3d towards_light;            // unit
+    int x = 0, y = 0;  // where it lies in the atlas
+    LightView view;    // local frame
+    LocalLight light;  // local frame; its irradiance is 1
     Rgb irradiance{};
+    int width() const { return view.width(); }
+    int height() const { return view.height(); }
   };
   std::vector<Map> maps;
 };
@@ -68,9 +69,10 @@ struct LightMapReport
 {
   int map_width = 0, map_height = 0;  // the first light's map
   double texel_mm = 0;
+  std::vector<std::string> notes;     // lights drawn otherwise than asked, and why
 };
 
-class LightMaps
+class GpuLightMaps
 {
 public:
   bool render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers,
@@ -92,9 +94,7 @@ private:
   // Keeps the atlas while it is large enough and at most four times the area needed.
   void allocate(vtkOpenGLRenderWindow* window, bool paper, int width, int height);
 
-  std::vector<OrthoView> maps_;
-  std::vector<GpuLight> lights_;
-  std::vector<int> map_x_;  // where each light's map starts in the atlas
+  std::vector<LightMapAtlas::Map> maps_;
   int width_ = 0, height_ = 0;
   vtkSmartPointer<vtkTextureObject> point_, power_, normal_, surfel_, depth_;
   vtkNew<vtkOpenGLFramebufferObject> fbo_;

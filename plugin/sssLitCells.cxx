@@ -48,22 +48,33 @@ void SetFloat3Array(vtkShaderProgram* program, const char* name, const std::vect
 void SetMaps(vtkShaderProgram* program, const LightMapAtlas& maps)
 {
   std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f), texel(kMaxLights, 0.0f),
-    corner(2 * kMaxLights, 0.0f);
-  std::vector<Eigen::Vector3d> u, v, towards, irradiance;
+    corner(2 * kMaxLights, 0.0f), spot(2 * kMaxLights, 0.0f);
+  std::vector<int> positional(kMaxLights, 0);
+  std::vector<Eigen::Vector3d> u, v, w, towards, position, attenuation, irradiance;
   for (std::size_t l = 0; l < maps.maps.size(); ++l)
   {
     const LightMapAtlas::Map& m = maps.maps[l];
     float* r = &rects[4 * l * kMaxLevels];
     r[0] = float(m.x);
     r[1] = float(m.y);
-    r[2] = float(m.width);
-    r[3] = float(m.height);
-    texel[l] = static_cast<float>(m.texel);
-    corner[2 * l] = static_cast<float>(m.corner.x());
-    corner[2 * l + 1] = static_cast<float>(m.corner.y());
-    u.push_back(m.u);
-    v.push_back(m.v);
-    towards.push_back(m.towards_light);
+    r[2] = float(m.width());
+    r[3] = float(m.height());
+    const bool from_point = m.view.from_point;
+    const OrthoView& o = m.view.ortho;
+    const PerspectiveView& p = m.view.perspective;
+    texel[l] = static_cast<float>(from_point ? p.pixel : o.pixel);
+    const Eigen::Vector2d& c = from_point ? p.corner : o.corner;
+    corner[2 * l] = static_cast<float>(c.x());
+    corner[2 * l + 1] = static_cast<float>(c.y());
+    u.push_back(from_point ? p.u : o.u);
+    v.push_back(from_point ? p.v : o.v);
+    w.push_back(from_point ? p.w : o.w);
+    positional[l] = from_point ? 1 : 0;
+    towards.push_back(m.light.direction);
+    position.push_back(m.light.position);
+    attenuation.push_back(m.light.attenuation);
+    spot[2 * l] = static_cast<float>(m.light.cone_cos);
+    spot[2 * l + 1] = static_cast<float>(m.light.exponent);
     irradiance.push_back(Eigen::Vector3d(m.irradiance[0], m.irradiance[1], m.irradiance[2]));
   }
   program->SetUniformi("lightCount", static_cast<int>(maps.maps.size()));
@@ -72,7 +83,12 @@ void SetMaps(vtkShaderProgram* program, const LightMapAtlas& maps)
   program->SetUniform2fv("mapCorner", kMaxLights, corner.data());
   SetFloat3Array(program, "mapAxisU", u);
   SetFloat3Array(program, "mapAxisV", v);
+  SetFloat3Array(program, "mapAxisW", w);
+  program->SetUniform1iv("lightPositional", kMaxLights, positional.data());
   SetFloat3Array(program, "lightDirection", towards);
+  SetFloat3Array(program, "lightPosition", position);
+  SetFloat3Array(program, "lightAttenuation", attenuation);
+  program->SetUniform2fv("lightSpot", kMaxLights, spot.data());
   SetFloat3Array(program, "lightIrradiance", irradiance);
   program->SetUniformi("mapSurfel", maps.surfel->GetTextureUnit());
 }

@@ -193,7 +193,7 @@ bool PaperVirtualPoints::bake(vtkOpenGLRenderWindow* window, const LocalSurfels&
 }
 
 bool PaperVirtualPoints::gather(
-  vtkOpenGLRenderWindow* window, const LightMaps& maps, const Dipole& dipole, std::string& error)
+  vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole, std::string& error)
 {
   const VirtualGrid& grid = *grid_;
   ReceiverList& receivers = *receivers_;
@@ -232,19 +232,20 @@ bool PaperVirtualPoints::gather(
     for (std::size_t l = 0; l < atlas.maps.size(); ++l)
     {
       const LightMapAtlas::Map& m = atlas.maps[l];
+      const OrthoView& o = m.view.ortho;  // the paper's maps are all orthographic
       float* r = &rects[4 * l * kMaxLevels];
       r[0] = float(m.x);
       r[1] = float(m.y);
-      r[2] = float(m.width);
-      r[3] = float(m.height);
-      texel[l] = static_cast<float>(m.texel);
+      r[2] = float(o.width);
+      r[3] = float(o.height);
+      texel[l] = static_cast<float>(o.pixel);
       for (int c = 0; c < 3; ++c)
       {
-        axis_u[3 * l + c] = static_cast<float>(m.u[c]);
-        axis_v[3 * l + c] = static_cast<float>(m.v[c]);
+        axis_u[3 * l + c] = static_cast<float>(o.u[c]);
+        axis_v[3 * l + c] = static_cast<float>(o.v[c]);
       }
-      corner[2 * l] = static_cast<float>(m.corner.x());
-      corner[2 * l + 1] = static_cast<float>(m.corner.y());
+      corner[2 * l] = static_cast<float>(o.corner.x());
+      corner[2 * l + 1] = static_cast<float>(o.corner.y());
     }
     taps->SetUniformi("lightCount", static_cast<int>(atlas.maps.size()));
     taps->SetUniform4fv("levelRect", kMaxLights * kMaxLevels, rects.data());

@@ -26,7 +26,7 @@ namespace sss
 {
 
 class Dipole;
-class LightMaps;
+class GpuLightMaps;
 class VirtualGrid;
 struct LocalSurfels;
 struct ReceiverList;
@@ -48,7 +48,7 @@ public:
   bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Dipole& dipole,
     int level, VirtualPointReport& report, std::string& error);
   // B at every virtual point from the paper's light maps, into the 3-D texture.
-  bool gather(vtkOpenGLRenderWindow* window, const LightMaps& maps, const Dipole& dipole,
+  bool gather(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
     std::string& error);
 
   const VirtualGrid& grid() const { return *grid_; }

@@ -22,7 +22,7 @@ struct TranslucentActorState::Gpu
   LocalSurfels local;
   std::unique_ptr<Dipole> dipole;
   SurfelBuffers buffers;
-  LightMaps maps;            // step 1
+  GpuLightMaps maps;            // step 1
   SurfelPipeline pipeline;   // step 2, NEAR_FAR
   PaperVirtualPoints paper;  // step 2, PAPER
   SurfelResolve resolve;     // B per surfel for the camera view
@@ -120,6 +120,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   report.map_width = maps.map_width;
   report.map_height = maps.map_height;
   report.texel_mm = maps.texel_mm;
+  report.notes = maps.notes;
 
   if (paper)
   {

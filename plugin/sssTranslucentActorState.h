@@ -40,6 +40,7 @@ struct StepReport
   int map_width = 0, map_height = 0, grid_level = 0;
   double texel_mm = 0, grid_spacing_mm = 0;
   double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
+  std::vector<std::string> notes;             // lights drawn otherwise than asked, and why
 };
 
 class TranslucentActorState

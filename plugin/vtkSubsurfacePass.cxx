@@ -1,6 +1,7 @@
 #include "vtkSubsurfacePass.h"
 
 #include "sssGpuHelpers.h"
+#include "sssSceneLights.h"
 #include "sssTranslucentActorState.h"
 #include "sss_composite_fs.h"
 #include "sss_dipole.h"
@@ -52,8 +53,7 @@ struct vtkSubsurfacePass::Internals
   vtkNew<vtkFloatArray> Linear;
   std::set<std::string> Reported;
   std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> Precomputed;
-  // The renderer's lights this frame: direction towards each (world frame), irradiance.
-  std::vector<std::pair<Eigen::Vector3d, sss::Rgb>> Lights;
+  std::vector<sss::GpuLight> Lights;  // the renderer's, this frame, world frame
 
   void ReportOnce(vtkSubsurfacePass* self, const std::string& message, bool error)
   {
@@ -172,55 +172,18 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
 
 void vtkSubsurfacePass::GatherLights(vtkRenderer* ren)
 {
-  Internals& impl = *this->Impl;
-  std::vector<std::pair<Eigen::Vector3d, sss::Rgb>>& lights = impl.Lights;
-  lights.clear();
-  if (ren->GetLights()->GetNumberOfItems() == 0 && ren->GetAutomaticLightCreation())
+  std::vector<std::string> notes;
+  this->Impl->Lights = sss::gather_scene_lights(ren, notes);
+  for (const std::string& note : notes)
   {
-    ren->CreateLight();  // the headlight VTK would add later in this frame
+    this->Impl->ReportOnce(this, note, false);
   }
-  vtkLightCollection* collection = ren->GetLights();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  while (vtkLight* light = collection->GetNextLight(it))
-  {
-    if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
-    {
-      continue;
-    }
-    double p[3], f[3], c[3];
-    light->GetTransformedPosition(p);
-    light->GetTransformedFocalPoint(f);
-    light->GetDiffuseColor(c);
-    Eigen::Vector3d d(p[0] - f[0], p[1] - f[1], p[2] - f[2]);
-    if (!d.allFinite() || d.norm() == 0.0)
-    {
-      impl.ReportOnce(this, "a light's position equals its focal point; it is left out", false);
-      continue;
-    }
-    if (light->GetPositional())
-    {
-      impl.ReportOnce(this,
-        "positional lights are treated as directional (from the focal point to the position)",
-        false);
-    }
-    const double e = light->GetIntensity();
-    lights.push_back({ d.normalized(), { e * c[0], e * c[1], e * c[2] } });
-  }
-  if (lights.size() > static_cast<std::size_t>(sss::kMaxLights))
-  {
-    impl.ReportOnce(this,
-      "only the first " + std::to_string(sss::kMaxLights) + " lights light translucent actors",
-      false);
-    lights.resize(sss::kMaxLights);
-  }
-
 }
 
 void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
 {
   Internals& impl = *this->Impl;
-  const std::vector<std::pair<Eigen::Vector3d, sss::Rgb>>& lights = impl.Lights;
+  const std::vector<sss::GpuLight>& lights = impl.Lights;
   const sss::QualitySettings settings = SettingsOf(this);
 
   // Steps 1-2 for each translucent actor, where their inputs changed.
@@ -262,21 +225,8 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
         false);
     }
     seen.insert(actor);
-    // Lights into the actor's model frame (rotation and uniform scale).
-    Eigen::Matrix3d linear;
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear(r, c) = actor->GetMatrix()->GetElement(r, c);
-      }
-    }
-    const double scale = std::cbrt(std::fabs(linear.determinant()));
-    std::vector<sss::GpuLight> local;
-    for (const auto& l : lights)
-    {
-      local.push_back({ (linear.inverse() * l.first).normalized(), l.second });
-    }
+    const std::vector<sss::GpuLight> local = sss::lights_in_model_frame(lights, actor->GetMatrix());
+    const double scale = std::cbrt(std::fabs(actor->GetMatrix()->Determinant()));
     sss::Material core = CoreMaterial(material);
     core.mm_per_unit *= scale;
     auto& state = impl.States[actor];
@@ -320,6 +270,10 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
       continue;
     }
     impl.Ready.insert(actor);
+    for (const std::string& note : report.notes)
+    {
+      impl.ReportOnce(this, note, false);
+    }
     this->Record(report);
   }
   for (auto it2 = impl.States.begin(); it2 != impl.States.end();)

@@ -5,9 +5,11 @@
  * Renders its delegate (the usual camera/sequence passes) into a float image and composites
  * it into the output. Actors that carry a vtkTranslucentMaterial and draw with a
  * vtkSurfelMapper get, in three steps:
- *  1. a light map from every switched-on light of the renderer (treated as directional, from
- *     its focal point towards its position): the discs the light sees, lifted onto their
- *     local surfaces;
+ *  1. a light map from every switched-on light of the renderer (up to 4): orthographic along
+ *     a directional light, perspective from a positional one (a point light, or a spot below
+ *     a cone angle of 90 degrees, its irradiance falling off with VTK's attenuation values and
+ *     exponent; one among the points is taken as directional, from its focal point, with a
+ *     warning): the discs the light sees, lifted onto their local surfaces;
  *  2. B (eq. 17) at every surfel. Each surfel stands for its cell (the part of the surface
  *     nearer to it than to any other surfel) lit with the irradiance of eq. 15 averaged over
  *     CellSamples points of the cell, so shadow edges resolve below the surfel size. The near

@@ -13,9 +13,9 @@ uniform float kappaLimitCell;  // 1/mm: the curvature clamp of a surfel's parabo
 bool lightReaches(int light, vec3 y, float cosI, float thickness)
 {
   vec4 rect = levelRect[light * SSS_MAX_LEVELS];
-  vec2 at = (vec2(dot(y, mapAxisU[light]), dot(y, mapAxisV[light])) - mapCorner[light]) /
-    texelSize[light];
-  if (at.x < 0.0 || at.y < 0.0 || at.x >= rect.z || at.y >= rect.w)
+  vec2 at;
+  if (!mapCoordinates(light, y, at) || at.x < 0.0 || at.y < 0.0 || at.x >= rect.z ||
+    at.y >= rect.w)
   {
     return true;
   }
@@ -28,17 +28,17 @@ bool lightReaches(int light, vec3 y, float cosI, float thickness)
   vec3 p = texelFetch(surfelPoint, s, 0).xyz;
   vec4 shape = texelFetch(surfelShape, s, 0);
   vec3 n = shape.xyz;
-  vec3 l = lightDirection[light];
-  vec2 plane = mapCorner[light] + (floor(at) + 0.5) * texelSize[light];
-  vec3 centre = plane.x * mapAxisU[light] + plane.y * mapAxisV[light];
-  float cosSeen = dot(n, l);
+  vec3 origin, ray;
+  texelRay(light, ivec2(at), origin, ray);
+  float cosSeen = dot(n, ray);
   cosSeen = cosSeen < 0.0 ? min(cosSeen, -1e-4) : max(cosSeen, 1e-4);
-  vec3 d = centre + (dot(p - centre, n) / cosSeen) * l - p;
+  vec3 d = origin + (dot(p - origin, n) / cosSeen) * ray - p;
   // The texel's centre lies on the disc; only rounding can put d past its radius.
   d *= min(1.0, texelFetch(surfelCell, s, 0).z / max(length(d), 1e-30));
   float kappa = clamp(shape.w, -kappaLimitCell, kappaLimitCell);
   vec3 seenPoint = p + d - 0.5 * kappa * dot(d, d) * n;
   vec3 seenNormal = normalize(n + kappa * d);
+  vec3 l = towardsLight(light, y);
   float along = dot(seenPoint - y, seenNormal) / max(abs(dot(seenNormal, l)), 0.05);
   return abs(along) <= thickness / max(cosI, 0.1);
 }

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 // Step 2, per surfel and light (core/surfel_irradiance.h is the same on the CPU): the
-// irradiance of eq. 15 averaged over the surfel's cell, E = E_light albedo 1/S Sum_s
+// irradiance of eq. 15 averaged over the surfel's cell, E = albedo 1/S Sum_s E_light(y_s)
 // Ft(eta, theta_s) cos(theta_s) V(y_s) over S points spread over a disc of the cell's area on
 // the surfel's local surface, V from the light's map, sampled again with more points where the
 // first ones disagree (an edge crosses the cell); and the cell as a source of the far field:
@@ -22,7 +22,7 @@ void main()
   ivec2 at = ivec2(texCoord * vec2(textureSize(surfelPoint, 0)));
   vec4 point = texelFetch(surfelPoint, at, 0);
   vec3 E = vec3(0.0);
-  vec3 l = lightDirection[light];
+  vec3 l = towardsLight(light, point.xyz);
   vec3 n = vec3(0.0);
   float cellRadius = 0.0;
   float area = 0.0;
@@ -53,10 +53,11 @@ void main()
         vec3 d = rho * (cos(angle) * t1 + sin(angle) * t2);
         vec3 y = point.xyz + d - 0.5 * kappa * dot(d, d) * n;
         vec3 ny = normalize(n + kappa * d);
-        float cosI = dot(ny, l);
+        vec3 ly = towardsLight(light, y);
+        float cosI = dot(ny, ly);
         if (cosI > 0.0 && lightReaches(light, y, cosI, point.w))
         {
-          sum += fresnelFt(cosI) * cosI;
+          sum += fresnelFt(cosI) * cosI * lightFalloff(light, y);
           ++lit;
         }
       }

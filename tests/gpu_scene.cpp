@@ -40,7 +40,7 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud, const Eigen::
 }
 
 GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
-                   const std::vector<DirectionalLight>& lights, const Eigen::Vector3d& view,
+                   const std::vector<Light>& lights, const Eigen::Vector3d& view,
                    int size, const Eigen::Vector3d& shift) {
   window->SetSize(size, size);
   window->AddRenderer(renderer);
@@ -69,14 +69,22 @@ GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
   renderer->ResetCamera();
 }
 
-void GpuScene::set_lights(const std::vector<DirectionalLight>& lights) {
+void GpuScene::set_lights(const std::vector<Light>& lights) {
   renderer->RemoveAllLights();
-  for (const DirectionalLight& l : lights) {
+  for (const Light& l : lights) {
     vtkNew<vtkLight> light;
     light->SetLightTypeToSceneLight();
-    light->SetPositional(false);
-    light->SetFocalPoint(0, 0, 0);
-    light->SetPosition(l.direction.data());
+    light->SetPositional(l.positional);
+    if (l.positional) {
+      light->SetPosition(l.position.data());
+      light->SetFocalPoint(Eigen::Vector3d(l.position - l.direction).data());
+      light->SetAttenuationValues(l.attenuation.data());
+      light->SetConeAngle(l.cone_angle);
+      light->SetExponent(l.exponent);
+    } else {
+      light->SetFocalPoint(0, 0, 0);
+      light->SetPosition(l.direction.data());
+    }
     light->SetIntensity(l.irradiance);
     renderer->AddLight(light);
   }

@@ -31,10 +31,10 @@ struct GpuScene {
   // The cloud (validated, scene units) shifted by `shift`, lit by `lights`, seen along
   // `view` (from the object towards the camera), orthographic, with the pass's defaults. A
   // cloud with albedo passes it as 8-bit point colours with ColoursAsAlbedo on.
-  GpuScene(const SurfelCloud& cloud, const Material& m, const std::vector<DirectionalLight>& lights,
+  GpuScene(const SurfelCloud& cloud, const Material& m, const std::vector<Light>& lights,
            const Eigen::Vector3d& view = Eigen::Vector3d(0, 0, 1), int size = 256,
            const Eigen::Vector3d& shift = Eigen::Vector3d::Zero());
-  void set_lights(const std::vector<DirectionalLight>& lights);
+  void set_lights(const std::vector<Light>& lights);
   // Renders one frame and returns each surfel's B (NaN for points the mapper left out).
   std::vector<Rgb> render_B();
 };

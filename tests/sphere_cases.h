@@ -32,7 +32,7 @@ Rgb local_closed_form(const Material& material, const Eigen::Vector3d& n,
 // the coarse points to compare at and their 6 nearest fine points.
 struct TwoSamplings {
   SurfelCloud coarse, fine;
-  std::vector<DirectionalLight> light;
+  std::vector<Light> light;
   std::vector<std::size_t> points;
   std::vector<std::vector<std::size_t>> neighbours;
 };

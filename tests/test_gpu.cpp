@@ -137,7 +137,7 @@ TEST(GpuAlbedo, ColoursScaleTheLightEnteringEachPoint) {
   SurfelCloud sphere = make_sphere(10.0, 0.5);
   sphere.validate();
   const Material milk = Material::preset("skimmilk");
-  const std::vector<DirectionalLight> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
+  const std::vector<Light> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
   const std::vector<Rgb> plain = GpuScene(sphere, milk, light).render_B();
   const Rgb tint{51 / 255.0, 102 / 255.0, 1.0};  // exact in 8 bits
   SurfelCloud tinted = sphere;

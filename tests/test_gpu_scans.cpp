@@ -54,7 +54,7 @@ TEST_P(GpuVsReference, MeetsItsBars) {
   if (path.empty()) GTEST_SKIP() << c.file << " is not in the shared data folder";
   const SurfelCloud cloud = load_scan(path);
   const Material material = Material::preset(c.material, 1.3, 1000.0);
-  const std::vector<DirectionalLight> lights{{c.light, 1.0}};
+  const std::vector<Light> lights{{c.light, 1.0}};
   ReferenceSettings settings;
   settings.receivers = sample_of(cloud, 3000, 1);  // 3000 points, a fixed seed
   Stopwatch clock;
@@ -120,7 +120,7 @@ TEST(GpuGeoreferenced, UtmTileMatchesTheTileShiftedToTheOrigin) {
   if (path.empty()) GTEST_SKIP() << "CSite1_red1-utm.pcd is not in the shared data folder";
   const SurfelCloud cloud = load_scan(path);
   const Material material = Material::preset("skin1", 1.3, 1000.0);
-  const std::vector<DirectionalLight> lights{{kTileLight, 1.0}};
+  const std::vector<Light> lights{{kTileLight, 1.0}};
   const Eigen::Vector3d centre = cloud.bounds().center();
   std::vector<Rgb> at_utm, at_origin;
   {

@@ -157,7 +157,7 @@ TEST_P(GpuSamplingInvariance, ThirtyMillimetreSphereAtTwoSamplings) {
   const TwoSamplings two = thirty_millimetre_spheres();
   const SurfelCloud &coarse = two.coarse, &fine = two.fine;
   const Material material = Material::preset(GetParam(), 1.3);
-  const std::vector<DirectionalLight>& light = two.light;
+  const std::vector<Light>& light = two.light;
   const std::vector<std::size_t>& points = two.points;
   const auto& neighbours = two.neighbours;
   std::vector<Rgb> coarse_B, fine_B;

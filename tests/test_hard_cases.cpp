@@ -13,7 +13,7 @@
 namespace sss {
 namespace {
 
-const std::vector<DirectionalLight> kTopLight{{Eigen::Vector3d(0, 0, 1), 1.0}};
+const std::vector<Light> kTopLight{{Eigen::Vector3d(0, 0, 1), 1.0}};
 
 // For tests of robustness rather than accuracy: coarser light maps, fewer samples per cell.
 ReferenceSettings quick() {
@@ -184,7 +184,7 @@ TEST(HardCases, UnitsAndFarOrigins) {
   for (auto& p : m.positions) p /= 1000.0;
   m.radius /= 1000.0;
   for (auto& p : far.positions) p += Eigen::Vector3d(1e6, -2e6, 1e6);
-  const std::vector<DirectionalLight> light{{Eigen::Vector3d(1, -1, 2), 1.0}};
+  const std::vector<Light> light{{Eigen::Vector3d(1, -1, 2), 1.0}};
   const SurfelRadiance a = render_reference(mm, Material::preset("marble", 1.3, 1.0), light);
   const SurfelRadiance b = render_reference(m, Material::preset("marble", 1.3, 1000.0), light);
   const SurfelRadiance c = render_reference(far, Material::preset("marble", 1.3, 1.0), light);
@@ -195,7 +195,7 @@ TEST(HardCases, UnitsAndFarOrigins) {
 // Light from behind the camera's side: the thin tube of a torus glows through.
 TEST(HardCases, BackLightShinesThroughThinParts) {
   const SurfelCloud torus = make_torus(20, 2, 0.25);
-  const std::vector<DirectionalLight> back{{Eigen::Vector3d(0, 0, -1), 1.0}};
+  const std::vector<Light> back{{Eigen::Vector3d(0, 0, -1), 1.0}};
   const SurfelRadiance r = render_reference(torus, Material::preset("skimmilk"), back, quick());
   expect_finite_nonnegative(r.B);
   double top = 0;

@@ -53,7 +53,7 @@ TEST_P(SamplingInvariance, ThirtyMillimetreSphereAtTwoSamplings) {
   const TwoSamplings two = thirty_millimetre_spheres();
   const SurfelCloud &coarse = two.coarse, &fine = two.fine;
   const Material material = Material::preset(GetParam(), 1.3);
-  const std::vector<DirectionalLight>& light = two.light;
+  const std::vector<Light>& light = two.light;
   ReferenceSettings at_coarse, at_fine;
   at_coarse.receivers = two.points;
   const auto& neighbours = two.neighbours;
@@ -87,7 +87,7 @@ TEST(ReferenceConvergence, RefiningQuadratureAndTexelsChangesLittle) {
   const SurfelCloud torus = make_torus(20.0, 6.0, 0.6);
   for (const char* name : {"marble", "ketchup"}) {
     const Material material = Material::preset(name, 1.3);
-    const std::vector<DirectionalLight> light{{Eigen::Vector3d(0.2, 0.5, 1.0), 1.0}};
+    const std::vector<Light> light{{Eigen::Vector3d(0.2, 0.5, 1.0), 1.0}};
     ReferenceSettings base, finer_tree, finer_texels;
     base.receivers = finer_tree.receivers = finer_texels.receivers = sample_of(torus, 1500, 5);
     finer_tree.tree.theta *= 0.5;

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 struct Scene {
   SurfelCloud cloud = make_sphere(3.0, 0.4);
   Material material = Material::preset("marble");
-  std::vector<DirectionalLight> lights{{Eigen::Vector3d(0.3, 0.2, 1.0), 1.0}};
+  std::vector<Light> lights{{Eigen::Vector3d(0.3, 0.2, 1.0), 1.0}};
   ReferenceSettings settings;
   Scene() {
     settings.light_map.texel_per_radius = 0.5;

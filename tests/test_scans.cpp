@@ -11,7 +11,7 @@
 namespace sss {
 namespace {
 
-const std::vector<DirectionalLight> kLight{{Eigen::Vector3d(0.4, 0.8, 0.45), 1.0}};
+const std::vector<Light> kLight{{Eigen::Vector3d(0.4, 0.8, 0.45), 1.0}};
 
 SurfelCloud load_or_skip(const char* name) {
   const std::string path = test::shared_data(name);

@@ -11,7 +11,7 @@ namespace {
 TEST(SourceTree, ExpansionAgreesWithDirectSum) {
   const SurfelCloud sphere = make_sphere(10.0, 0.5);  // mm
   const Material material = Material::preset("skimmilk");  // a long kernel: most is far field
-  const std::vector<DirectionalLight> light{{Eigen::Vector3d(1, 1, 2), 1.0}};
+  const std::vector<Light> light{{Eigen::Vector3d(1, 1, 2), 1.0}};
   ReferenceSettings direct;
   direct.tree.theta = 0.0;
   direct.receivers = {0};
@@ -47,7 +47,7 @@ TEST(SourceTree, BeyondADistanceAgreesWithDirectSum) {
   ReferenceSettings one, direct;
   one.receivers = direct.receivers = {0};
   direct.tree.theta = 0.0;
-  const std::vector<DirectionalLight> light{{Eigen::Vector3d(0, 1, 1), 1.0}};
+  const std::vector<Light> light{{Eigen::Vector3d(0, 1, 1), 1.0}};
   const ReferenceSolver fast(torus, material, light, one), exact(torus, material, light, direct);
   int fewer = 0;  // points with lit cells within the distance
   for (std::size_t i = 0; i < torus.size(); i += 211) {
