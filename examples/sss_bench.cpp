@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_csv.h"
 #include "cli_options.h"
 #include "cloud_input.h"
 #include "error_metric.h"
@@ -48,6 +49,8 @@ std::string shared_data(const std::string& name) {
 namespace fs = std::filesystem;
 using sss::cli::number;
 using sss::cli::TranslucentScene;
+using sss::bench::kColumns;
+using sss::bench::Row;
 
 const char* kUsage = R"(usage: sss_bench [CLOUD.pcd|.ply|.ply.gz ...] [options]
 
@@ -177,12 +180,9 @@ Setting setting_of(const std::string& text) {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(flag + ": needs a value");
-      return argv[++i];
-    };
+  for (sss::cli::Arguments args(argc, argv); args.next();) {
+    const std::string& flag = args.flag();
+    const auto value = [&args] { return args.value(); };
     if (flag == "--help") {
       std::fputs(kUsage, stdout);
       std::exit(0);
@@ -239,44 +239,6 @@ Options parse(int argc, char** argv) {
                               : o.out / "reference-cache";
   }
   return o;
-}
-
-// One row of bench.csv (columns: scripts/bench_report.py); NaN is an empty cell.
-struct Row {
-  std::string cloud, material, strategy, kind = "sweep";
-  std::size_t points = 0;
-  int map_size = 0;
-  double opening_angle = NAN, cell_samples = NAN;
-  bool is_paper = false, is_default = false;
-  double bake_s = NAN, light_s = NAN, frame_static_s = NAN, frame_moving_s = NAN,
-         plain_points_s = NAN;
-  double near_field_mib = NAN, virtual_points = NAN, lit_cells = NAN;
-  double err_mean = NAN, err_p99 = NAN, err_max = NAN, err8_mean = NAN, err8_max = NAN;
-  double peak_rss_mb = NAN;
-};
-
-const char* kColumns =
-  "cloud,points,material,strategy,map_size,opening_angle,cell_samples,is_paper,is_default,"
-  "bake_s,light_s,frame_static_s,frame_moving_s,plain_points_s,near_field_mib,virtual_points,"
-  "lit_cells,err_mean,err_p99,err_max,err8_mean,err8_max,peak_rss_mb,kind";
-
-std::string cell(double v) {
-  if (!std::isfinite(v)) return "";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
-
-void write_row(std::ostream& out, const Row& r) {
-  out << r.cloud << ',' << r.points << ',' << r.material << ',' << r.strategy << ','
-      << r.map_size << ',' << cell(r.opening_angle) << ',' << cell(r.cell_samples) << ','
-      << r.is_paper << ',' << r.is_default << ',' << cell(r.bake_s) << ',' << cell(r.light_s)
-      << ',' << cell(r.frame_static_s) << ',' << cell(r.frame_moving_s) << ','
-      << cell(r.plain_points_s) << ',' << cell(r.near_field_mib) << ','
-      << cell(r.virtual_points) << ',' << cell(r.lit_cells) << ',' << cell(r.err_mean) << ',' << cell(r.err_p99) << ',' << cell(r.err_max) << ','
-      << cell(r.err8_mean) << ',' << cell(r.err8_max) << ',' << cell(r.peak_rss_mb) << ','
-      << r.kind << '\n';
-  out.flush();
 }
 
 // The sweep: the paper's setting, the quality presets (balanced: the defaults), and a coarser

@@ -70,12 +70,9 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(flag + ": needs a value");
-      return argv[++i];
-    };
+  for (sss::cli::Arguments args(argc, argv); args.next();) {
+    const std::string& flag = args.flag();
+    const auto value = [&args] { return args.value(); };
     if (flag == "--help" || flag == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);

@@ -1,5 +1,6 @@
 #include "vtkSubsurfacePass.h"
 
+#include "sssCoreMaterial.h"
 #include "sssGpuHelpers.h"
 #include "sssSceneLights.h"
 #include "sssTranslucentActorState.h"
@@ -105,38 +106,13 @@ void Apply(vtkSubsurfacePass* pass, const sss::QualitySettings& q)
 vtkSubsurfacePass::vtkSubsurfacePass()
   : Impl(new Internals)
 {
-  const sss::QualitySettings defaults;
-  this->KernelStrategy = defaults.strategy == sss::KernelStrategy::Paper ? PAPER : NEAR_FAR;
-  this->TexelPerRadius = defaults.texel_per_radius;
-  this->MaxMapSize = defaults.max_map_size;
-  this->CellSamples = defaults.cell_samples;
-  this->OpeningAngle = defaults.opening_angle;
-  this->MaxGroupDiffusionLengths = defaults.max_group_diffusion_lengths;
-  this->GridLevel = defaults.grid_level;
+  Apply(this, sss::QualitySettings{});
   vtkNew<vtkRenderStepsPass> steps;
   this->SetDelegatePass(steps);
   this->Impl->Linear->SetNumberOfComponents(3);
 }
 
 vtkSubsurfacePass::~vtkSubsurfacePass() = default;
-
-namespace
-{
-sss::Material CoreMaterial(vtkTranslucentMaterial* m)
-{
-  sss::Material material;
-  material.name = m->GetName();
-  for (int c = 0; c < 3; ++c)
-  {
-    material.sigma_a[c] = m->GetSigmaA()[c];
-    material.sigma_s_prime[c] = m->GetSigmaSPrime()[c];
-    material.eta[c] = m->GetEta();
-  }
-  material.mm_per_unit = m->GetMillimetresPerUnit();
-  return material;
-}
-
-}
 
 void vtkSubsurfacePass::Render(const vtkRenderState* s)
 {
@@ -227,7 +203,7 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
     seen.insert(actor);
     const std::vector<sss::GpuLight> local = sss::lights_in_model_frame(lights, actor->GetMatrix());
     const double scale = std::cbrt(std::fabs(actor->GetMatrix()->Determinant()));
-    sss::Material core = CoreMaterial(material);
+    sss::Material core = sss::core_material(*material);
     core.mm_per_unit *= scale;
     auto& state = impl.States[actor];
     if (!state)

@@ -1,5 +1,7 @@
 #include "vtkTranslucentMaterial.h"
 
+#include "sssCoreMaterial.h"
+
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseKey.h"
 #include "vtkNew.h"
@@ -57,16 +59,24 @@ void vtkTranslucentMaterial::SetSigmaSPrime(double r, double g, double b)
   this->Modified();
 }
 
-std::string vtkTranslucentMaterial::Validate() const
+sss::Material sss::core_material(const vtkTranslucentMaterial& material)
 {
+  auto& from = const_cast<vtkTranslucentMaterial&>(material);  // VTK's getters are not const
   sss::Material m;
+  m.name = from.GetName();
   for (int c = 0; c < 3; ++c)
   {
-    m.sigma_a[c] = this->SigmaA[c];
-    m.sigma_s_prime[c] = this->SigmaSPrime[c];
-    m.eta[c] = this->Eta;
+    m.sigma_a[c] = from.GetSigmaA()[c];
+    m.sigma_s_prime[c] = from.GetSigmaSPrime()[c];
+    m.eta[c] = from.GetEta();
   }
-  m.mm_per_unit = this->MillimetresPerUnit;
+  m.mm_per_unit = from.GetMillimetresPerUnit();
+  return m;
+}
+
+std::string vtkTranslucentMaterial::Validate() const
+{
+  const sss::Material m = sss::core_material(*this);
   try
   {
     m.validate();

@@ -10,35 +10,6 @@
 
 namespace sss::test {
 
-vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud, const Eigen::Vector3d& shift) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkFloatArray> normals;
-  normals->SetNumberOfComponents(3);
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const Eigen::Vector3d p = cloud.positions[i] + shift;
-    points->InsertNextPoint(p.data());
-    normals->InsertNextTuple3(cloud.normals[i].x(), cloud.normals[i].y(), cloud.normals[i].z());
-  }
-  auto polydata = vtkSmartPointer<vtkPolyData>::New();
-  polydata->SetPoints(points);
-  polydata->GetPointData()->SetNormals(normals);
-  if (!cloud.radii.empty()) {  // each disc's own radius in the views, as sss_render passes it
-    vtkNew<vtkFloatArray> radii;
-    radii->SetName("Radius");
-    for (double r : cloud.radii) radii->InsertNextValue(static_cast<float>(r));
-    polydata->GetPointData()->AddArray(radii);
-  }
-  if (!cloud.albedo.empty()) {  // albedo as 8-bit colours, the form scans carry it in
-    vtkNew<vtkUnsignedCharArray> colours;
-    colours->SetNumberOfComponents(3);
-    for (const Rgb& a : cloud.albedo)
-      colours->InsertNextTuple3(std::round(255 * a[0]), std::round(255 * a[1]), std::round(255 * a[2]));
-    polydata->GetPointData()->SetScalars(colours);
-  }
-  return polydata;
-}
-
 GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
                    const std::vector<Light>& lights, const Eigen::Vector3d& view,
                    int size, const Eigen::Vector3d& shift) {
@@ -47,7 +18,7 @@ GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
   renderer->AutomaticLightCreationOff();
   mapper->SetInputData(to_polydata(cloud, shift));
   mapper->SetRadius(cloud.radius);
-  mapper->SetRadiusArrayName(cloud.radii.empty() ? "" : "Radius");
+  mapper->SetRadiusArrayName(cloud.radii.empty() ? "" : cli::kRadiusArray);
   mapper->SetScalarVisibility(!cloud.albedo.empty());
   actor->SetMapper(mapper);
   material->SetSigmaA(m.sigma_a[0], m.sigma_a[1], m.sigma_a[2]);
@@ -71,23 +42,7 @@ GpuScene::GpuScene(const SurfelCloud& cloud, const Material& m,
 
 void GpuScene::set_lights(const std::vector<Light>& lights) {
   renderer->RemoveAllLights();
-  for (const Light& l : lights) {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPositional(l.positional);
-    if (l.positional) {
-      light->SetPosition(l.position.data());
-      light->SetFocalPoint(Eigen::Vector3d(l.position - l.direction).data());
-      light->SetAttenuationValues(l.attenuation.data());
-      light->SetConeAngle(l.cone_angle);
-      light->SetExponent(l.exponent);
-    } else {
-      light->SetFocalPoint(0, 0, 0);
-      light->SetPosition(l.direction.data());
-    }
-    light->SetIntensity(l.irradiance);
-    renderer->AddLight(light);
-  }
+  cli::add_lights(renderer, lights);
 }
 
 std::vector<Rgb> GpuScene::render_B() {

@@ -1,4 +1,5 @@
-// Test support for the GPU path: a headless (EGL) scene with one translucent surfel actor.
+// Test support for the GPU path: a headless (EGL) scene with one translucent surfel actor,
+// built from the programs' shared pieces (examples/support).
 #pragma once
 
 #include <vtkActor.h>
@@ -15,10 +16,11 @@
 
 #include "light_map.h"
 #include "surfel_cloud.h"
+#include "translucent_scene.h"
 
 namespace sss::test {
 
-vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud, const Eigen::Vector3d& shift);
+using cli::to_polydata;
 
 struct GpuScene {
   vtkNew<vtkEGLSurfacelessRenderWindow> window;

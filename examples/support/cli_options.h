@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,30 @@ void apply_pass_settings(const Options& o, vtkSubsurfacePass* pass);
 // The cloud's disc radii by --radius-mode, --coverage and --radius-scale (splat_coverage.h);
 // returns a line saying what was chosen.
 std::string apply_splat_radii(const Options& o, SurfelCloud& cloud);
+
+// A program's arguments, flag by flag: `while (args.next())` visits each, `args.flag()` is the
+// current one and `args.value()` takes the next argument as its value (std::invalid_argument
+// naming the flag when there is none).
+class Arguments {
+ public:
+  Arguments(int argc, char** argv) : argc_(argc), argv_(argv) {}
+  bool next() {
+    if (++i_ >= argc_) return false;
+    flag_ = argv_[i_];
+    return true;
+  }
+  const std::string& flag() const { return flag_; }
+  std::string value() {
+    if (i_ + 1 >= argc_) throw std::invalid_argument(flag_ + ": needs a value");
+    return argv_[++i_];
+  }
+
+ private:
+  int argc_;
+  char** argv_;
+  int i_ = 0;
+  std::string flag_;
+};
 
 // The value of a numeric flag; throws std::invalid_argument naming the flag otherwise.
 double number(const std::string& flag, const std::string& text);

@@ -177,12 +177,9 @@ std::string apply_splat_radii(const Options& o, SurfelCloud& cloud) {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(flag + ": needs a value");
-      return argv[++i];
-    };
+  for (Arguments args(argc, argv); args.next();) {
+    const std::string& flag = args.flag();
+    const auto value = [&args] { return args.value(); };
     if (flag == "--help" || flag == "-h") {
       o.help = true;
     } else if (flag == "--output") {

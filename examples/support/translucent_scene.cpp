@@ -17,7 +17,7 @@
 
 namespace sss::cli {
 
-vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud) {
+vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud, const Eigen::Vector3d& shift) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.size()));
@@ -26,7 +26,8 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud) {
   normals->SetNumberOfTuples(static_cast<vtkIdType>(cloud.size()));
   normals->SetName("Normals");
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    points->SetPoint(static_cast<vtkIdType>(i), cloud.positions[i].data());
+    const Eigen::Vector3d p = cloud.positions[i] + shift;
+    points->SetPoint(static_cast<vtkIdType>(i), p.data());
     normals->SetTuple3(static_cast<vtkIdType>(i), cloud.normals[i].x(), cloud.normals[i].y(),
                        cloud.normals[i].z());
   }
@@ -54,12 +55,7 @@ vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud) {
   return polydata;
 }
 
-TranslucentScene::TranslucentScene(vtkRenderWindow* w, const SurfelCloud& cloud,
-                                   const Material& m, const std::vector<Light>& lights)
-  : window(w), polydata(to_polydata(cloud)) {
-  window->AddRenderer(renderer);
-  renderer->SetBackground(0, 0, 0);
-  renderer->AutomaticLightCreationOff();
+void add_lights(vtkRenderer* renderer, const std::vector<Light>& lights) {
   for (const Light& l : lights) {
     vtkNew<vtkLight> light;
     light->SetLightTypeToSceneLight();
@@ -77,6 +73,15 @@ TranslucentScene::TranslucentScene(vtkRenderWindow* w, const SurfelCloud& cloud,
     light->SetIntensity(l.irradiance);
     renderer->AddLight(light);
   }
+}
+
+TranslucentScene::TranslucentScene(vtkRenderWindow* w, const SurfelCloud& cloud,
+                                   const Material& m, const std::vector<Light>& lights)
+  : window(w), polydata(to_polydata(cloud)) {
+  window->AddRenderer(renderer);
+  renderer->SetBackground(0, 0, 0);
+  renderer->AutomaticLightCreationOff();
+  add_lights(renderer, lights);
   mapper->SetInputData(polydata);
   mapper->SetRadius(cloud.radius);
   mapper->SetRadiusArrayName(cloud.radii.empty() ? "" : kRadiusArray);

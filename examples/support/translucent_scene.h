@@ -1,5 +1,5 @@
 // The scene sss_render and sss_bench draw: one surfel cloud as a translucent actor under
-// directional lights, with the subsurface pass, in a given window; and its frame timings.
+// its lights, with the subsurface pass, in a given window; and its frame timings.
 #pragma once
 
 #include <vtkActor.h>
@@ -21,10 +21,15 @@
 
 namespace sss::cli {
 
-// Points, normals, per-point radii (when the cloud has them, as kRadiusArray) and (when the
-// cloud has albedo) 8-bit colours.
+// Points (moved by `shift`), normals, per-point radii (when the cloud has them, as
+// kRadiusArray) and (when the cloud has albedo) 8-bit colours.
 constexpr const char* kRadiusArray = "Radius";
-vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud);
+vtkSmartPointer<vtkPolyData> to_polydata(const SurfelCloud& cloud,
+                                         const Eigen::Vector3d& shift = Eigen::Vector3d::Zero());
+
+// The lights as scene lights of `renderer`: directional ones from their direction towards the
+// origin, positional ones with their position, spot cone, exponent and attenuation.
+void add_lights(vtkRenderer* renderer, const std::vector<Light>& lights);
 
 struct TranslucentScene {
   vtkSmartPointer<vtkRenderWindow> window;
