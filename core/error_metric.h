@@ -1,4 +1,4 @@
-// The one error metric of the project (DESIGN section 7), for images and per-point radiance.
+// The one error metric of the project, for images and per-point radiance.
 //
 // Over the samples (pixels or points) present in both: a sample's relative error is the mean
 // over RGB of |test - reference| divided by the mean over RGB of the reference. Samples whose

@@ -12,6 +12,7 @@
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"  // the maps' accessors convert smart pointers
 
 #include <Eigen/Core>
 #include <string>
@@ -20,7 +21,6 @@
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
-class vtkTextureObject;
 class vtkWindow;
 
 namespace sss

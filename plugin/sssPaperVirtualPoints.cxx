@@ -2,6 +2,7 @@
 
 #include "sssLightMaps.h"
 #include "sssPaperTaps.h"
+#include "sssSurfelResolve.h"
 #include "sss_dipole.h"
 #include "sss_gather_paper.h"
 #include "sss_light_maps.h"
@@ -123,9 +124,18 @@ void PaperVirtualPoints::release(vtkWindow* window)
   grid_fbo_->ReleaseGraphicsResources(window);
 }
 
-bool PaperVirtualPoints::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
-  const Dipole& dipole, int level, VirtualPointReport& report, std::string& error)
+LightMapRequest PaperVirtualPoints::light_map_request(const QualitySettings&) const
 {
+  LightMapRequest request;
+  request.paper = true;
+  return request;
+}
+
+bool PaperVirtualPoints::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
+  const Material&, const Dipole& dipole, const QualitySettings& settings, StepReport& report,
+  std::string& error)
+{
+  const int level = settings.grid_level;
   grid_.reset();
   radiance_ = nullptr;
   VirtualGridSettings grid_settings;
@@ -192,8 +202,9 @@ bool PaperVirtualPoints::bake(vtkOpenGLRenderWindow* window, const LocalSurfels&
   return true;
 }
 
-bool PaperVirtualPoints::gather(
-  vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole, std::string& error)
+bool PaperVirtualPoints::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps,
+  const Dipole& dipole, bool, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport&,
+  std::string& error)
 {
   const VirtualGrid& grid = *grid_;
   ReceiverList& receivers = *receivers_;
@@ -308,7 +319,7 @@ bool PaperVirtualPoints::gather(
   state->PopFramebufferBindings();
   grid_vao_.vao->Release();
   receivers.B->Deactivate();
-  return true;
+  return resolve.from_grid(window, points, *this, error);
 }
 
 }

@@ -6,6 +6,7 @@
 #define sssPaperVirtualPoints_h
 
 #include "sssGpuHelpers.h"
+#include "sssStep2.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -26,35 +27,31 @@ namespace sss
 {
 
 class Dipole;
-class GpuLightMaps;
 class VirtualGrid;
 struct LocalSurfels;
 struct ReceiverList;
 
-struct VirtualPointReport
-{
-  std::size_t virtual_point_count = 0;
-  int grid_level = 0;
-  double grid_spacing_mm = 0;
-};
-
-class PaperVirtualPoints
+class PaperVirtualPoints : public Step2
 {
 public:
   PaperVirtualPoints();
-  ~PaperVirtualPoints();
+  ~PaperVirtualPoints() override;
 
-  // The grid for these surfels: 2^level points per axis, 0 for the paper's 64.
-  bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Dipole& dipole,
-    int level, VirtualPointReport& report, std::string& error);
-  // B at every virtual point from the paper's light maps, into the 3-D texture.
-  bool gather(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
-    std::string& error);
+  // The grid for these surfels: 2^GridLevel points per axis, 0 for the paper's 64.
+  bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
+    const Dipole& dipole, const QualitySettings& settings, StepReport& report,
+    std::string& error) override;
+  // The paper's maps: 512 texels a side, eq. 15 per texel.
+  LightMapRequest light_map_request(const QualitySettings& settings) const override;
+  // B at every virtual point from the maps, into the 3-D texture, then at each surfel.
+  bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
+    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+    std::string& error) override;
+  void release(vtkWindow* window) override;
 
   const VirtualGrid& grid() const { return *grid_; }
   vtkTextureObject* radiance() const { return radiance_; }  // 3-D, linear filtering
   vtkTextureObject* gathered() const;  // B per virtual point, in their list's layout
-  void release(vtkWindow* window);
 
 private:
   std::unique_ptr<VirtualGrid> grid_;

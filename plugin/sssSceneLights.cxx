@@ -6,7 +6,6 @@
 #include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkRenderer.h"
-#include "vtkTextureObject.h"
 
 #include <Eigen/Dense>
 

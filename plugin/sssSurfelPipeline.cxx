@@ -5,6 +5,7 @@
 #include "sssLitCells.h"
 #include "sssNearFieldTable.h"
 #include "sssSurfelList.h"
+#include "sssSurfelResolve.h"
 #include "sss_dipole.h"
 #include "sss_far_field.h"
 #include "sss_near_field.h"
@@ -99,14 +100,13 @@ SurfelPipeline::SurfelPipeline()
 
 SurfelPipeline::~SurfelPipeline() = default;
 
-vtkTextureObject* SurfelPipeline::radiance() const
+LightMapRequest SurfelPipeline::light_map_request(const QualitySettings& settings) const
 {
-  return gpu_->B;
-}
-
-vtkOpenGLBufferObject* SurfelPipeline::list_texel() const
-{
-  return gpu_->list.texel_buffer();
+  LightMapRequest request;
+  request.texel_per_radius = settings.texel_per_radius;
+  request.max_map_size = settings.max_map_size;
+  request.list_texel = gpu_->list.texel_buffer();
+  return request;
 }
 
 void SurfelPipeline::release(vtkWindow* window)
@@ -115,7 +115,7 @@ void SurfelPipeline::release(vtkWindow* window)
 }
 
 bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
-  const Material& material, const QualitySettings& settings, SurfelPipelineReport& report,
+  const Material& material, const Dipole&, const QualitySettings& settings, StepReport& report,
   std::string& error)
 {
   Gpu& g = *gpu_;
@@ -151,9 +151,11 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
   return true;
 }
 
-bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& maps, bool finish,
-  SurfelPipelineReport& report, std::string& error)
+bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& light_maps,
+  const Dipole&, bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points,
+  StepReport& report, std::string& error)
 {
+  const LightMapAtlas maps = light_maps.atlas();
   Gpu& g = *gpu_;
   Stopwatch clock;
   if (!g.cells.light(window, g.list, maps, g.radius, g.settings.cell_samples, report.lit_cells,
@@ -208,7 +210,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const LightMapAtlas& m
   state->PopFramebufferBindings();
   finish_if(finish);
   report.seconds_B = clock.lap();
-  return true;
+  return resolve.from_list(window, points, g.list.texel_buffer(), g.B, error);
 }
 
 }

@@ -14,6 +14,7 @@
 #include "near_far_split.h"
 #include "quality_settings.h"
 #include "sssLightMaps.h"
+#include "sssStep2.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -35,36 +36,24 @@ class vtkWindow;
 namespace sss
 {
 
-struct SurfelPipelineReport
-{
-  double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
-  std::size_t near_entries = 0;               // table entries, all receivers
-  std::size_t lit_cells = 0;                  // surfels with light, summed over the lights
-  // With `finish`: seconds of the lit cells (irradiance and pyramid) and of B (near and far).
-  double seconds_cells = 0, seconds_B = 0;
-};
-
-class SurfelPipeline
+class SurfelPipeline : public Step2
 {
 public:
   SurfelPipeline();
-  ~SurfelPipeline();
+  ~SurfelPipeline() override;
 
-  // The CPU bake and its uploads; `local` must carry its surface fit (and its albedo, or none
-  // for white).
+  // The CPU bake (cells, the near-field table, the surfel list) and its uploads.
   bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
-    const QualitySettings& settings, SurfelPipelineReport& report, std::string& error);
-
-  // Irradiance, source pyramids and B at every surfel for the given light maps.
-  bool light(vtkOpenGLRenderWindow* window, const LightMapAtlas& maps, bool finish,
-    SurfelPipelineReport& report, std::string& error);
-
-  // B per surfel in the surfel list's layout, and each input surfel's texel in it (a vec2
-  // attribute buffer, input order).
-  vtkTextureObject* radiance() const;
-  vtkOpenGLBufferObject* list_texel() const;
-
-  void release(vtkWindow* window);
+    const Dipole& dipole, const QualitySettings& settings, StepReport& report,
+    std::string& error) override;
+  // Maps of the surfel each texel sees, texels TexelPerRadius of a disc radius.
+  LightMapRequest light_map_request(const QualitySettings& settings) const override;
+  // Irradiance, source pyramids and B at every surfel for the given light maps; with `finish`
+  // the report's seconds of the lit cells (irradiance and pyramid) and of B (near and far).
+  bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
+    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+    std::string& error) override;
+  void release(vtkWindow* window) override;
 
 private:
   struct Gpu;

@@ -1,6 +1,5 @@
 #include "sssTranslucentActorState.h"
 
-#include "sssPaperVirtualPoints.h"
 #include "sssSurfelBuffers.h"
 #include "sssSurfelResolve.h"
 
@@ -22,17 +21,19 @@ struct TranslucentActorState::Gpu
   LocalSurfels local;
   std::unique_ptr<Dipole> dipole;
   SurfelBuffers buffers;
-  GpuLightMaps maps;            // step 1
-  SurfelPipeline pipeline;   // step 2, NEAR_FAR
-  PaperVirtualPoints paper;  // step 2, PAPER
-  SurfelResolve resolve;     // B per surfel for the camera view
+  GpuLightMaps maps;              // step 1
+  std::unique_ptr<Step2> step2;   // the strategy's
+  KernelStrategy strategy = KernelStrategy::NearFar;
+  SurfelResolve resolve;          // B per surfel for the camera view
 
   void release(vtkWindow* window)
   {
     buffers.release();
     maps.release(window);
-    pipeline.release(window);
-    paper.release(window);
+    if (step2)
+    {
+      step2->release(window);
+    }
     resolve.release(window);
   }
 };
@@ -102,15 +103,9 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
     report.seconds_bake = clock.lap();
   }
 
-  const bool paper = settings.strategy == KernelStrategy::Paper;
-  LightMapRequest request;
-  request.paper = paper;
-  request.texel_per_radius = settings.texel_per_radius;
-  request.max_map_size = settings.max_map_size;
-  request.list_texel = paper ? nullptr : g.pipeline.list_texel();
   LightMapReport maps;
-  if (!g.maps.render(window, g.buffers, g.local, lights, request, material_,
-        albedo_from_colour, maps, error))
+  if (!g.maps.render(window, g.buffers, g.local, lights, g.step2->light_map_request(settings),
+        material_, albedo_from_colour, maps, error))
   {
     return false;
   }
@@ -121,27 +116,9 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   report.map_height = maps.map_height;
   report.texel_mm = maps.texel_mm;
   report.notes = maps.notes;
-
-  if (paper)
+  if (!g.step2->light(window, g.maps, *g.dipole, finish, g.resolve, g.buffers.points, report, error))
   {
-    if (!g.paper.gather(window, g.maps, *g.dipole, error) ||
-      !g.resolve.from_grid(window, g.buffers.points, g.paper, error))
-    {
-      return false;
-    }
-  }
-  else
-  {
-    SurfelPipelineReport step;
-    if (!g.pipeline.light(window, g.maps.atlas(), finish, step, error) ||
-      !g.resolve.from_list(
-        window, g.buffers.points, g.pipeline.list_texel(), g.pipeline.radiance(), error))
-    {
-      return false;
-    }
-    report.lit_cells = step.lit_cells;
-    report.seconds_cells = step.seconds_cells;
-    report.seconds_B = step.seconds_B;
+    return false;
   }
   finish_if(finish);
   report.surfels = true;
@@ -161,19 +138,15 @@ bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSu
   g.buffers.upload(g.local, surfels.rgba);
   g.maps.buffers_changed();
   g.resolve.allocate(window, n);
-  if (settings.strategy == KernelStrategy::Paper)
+  if (!g.step2 || g.strategy != settings.strategy)
   {
-    VirtualPointReport grid;
-    if (!g.paper.bake(window, g.local, *g.dipole, settings.grid_level, grid, error))
+    if (g.step2)
     {
-      return false;
+      g.step2->release(window);
     }
-    report.virtual_point_count = grid.virtual_point_count;
-    report.grid_level = grid.grid_level;
-    report.grid_spacing_mm = grid.grid_spacing_mm;
-    return true;
+    g.step2 = make_step2(settings.strategy);
+    g.strategy = settings.strategy;
   }
-  g.paper.release(window);
   // Colours as albedo, as the light maps' fragments take them.
   g.local.albedo.clear();
   if (albedo_from_colour)
@@ -187,15 +160,7 @@ bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSu
       }
     }
   }
-  SurfelPipelineReport step;
-  if (!g.pipeline.bake(window, g.local, material_, settings, step, error))
-  {
-    return false;
-  }
-  report.near_reach_mm = step.near_reach_mm;
-  report.far_from_mm = step.far_from_mm;
-  report.near_entries = step.near_entries;
-  return true;
+  return g.step2->bake(window, g.local, material_, *g.dipole, settings, report, error);
 }
 
 bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,

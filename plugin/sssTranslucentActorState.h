@@ -1,7 +1,7 @@
 // One translucent actor in a vtkSubsurfacePass: which steps its changed inputs call for, and
 // their order. The steps live in their own rooms: the light maps (step 1, sssLightMaps), step 2
-// (sssSurfelPipeline, or the paper's sssPaperVirtualPoints) and the hand-over of each surfel's
-// B to the camera view (sssSurfelResolve).
+// (the strategy's, sssStep2: sssSurfelPipeline or the paper's sssPaperVirtualPoints) and the
+// hand-over of each surfel's B to the camera view (sssSurfelResolve).
 #ifndef sssTranslucentActorState_h
 #define sssTranslucentActorState_h
 
@@ -9,7 +9,7 @@
 #include "material.h"
 #include "quality_settings.h"
 #include "sssLightMaps.h"
-#include "sssSurfelPipeline.h"
+#include "sssStep2.h"
 #include "sssSurfelPreparation.h"
 
 #include "vtkNew.h"
@@ -30,18 +30,6 @@ class vtkWindow;
 
 namespace sss
 {
-
-struct StepReport
-{
-  bool bake = false, illumination = false, surfels = false;
-  double seconds_bake = 0, seconds_illumination = 0, seconds_surfels = 0;
-  double seconds_cells = 0, seconds_B = 0;  // within seconds_surfels (NEAR_FAR)
-  std::size_t lit_cells = 0, virtual_point_count = 0, surfel_count = 0, near_entries = 0;
-  int map_width = 0, map_height = 0, grid_level = 0;
-  double texel_mm = 0, grid_spacing_mm = 0;
-  double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
-  std::vector<std::string> notes;             // lights drawn otherwise than asked, and why
-};
 
 class TranslucentActorState
 {

@@ -18,8 +18,6 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -33,8 +31,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
-
-#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
@@ -586,4 +582,18 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeasureStepTimes: " << this->MeasureStepTimes << "\n";
   os << indent << "Runs (bake, illumination, surfels, view): " << this->BakeRuns << " "
      << this->IlluminationRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";
+  os << indent << "Last seconds (bake, illumination, surfels: cells + B, view): "
+     << this->LastBakeSeconds << " " << this->LastIlluminationSeconds << " "
+     << this->LastSurfelSeconds << ": " << this->LastCellSeconds << " + "
+     << this->LastRadianceSeconds << " " << this->LastViewSeconds << "\n";
+  os << indent << "Last map: " << this->LastMapWidth << " x " << this->LastMapHeight << ", texel "
+     << this->LastTexelMillimetres << " mm\n";
+  os << indent << "Last near field: to " << this->LastNearReachMillimetres << " mm, "
+     << this->LastNearFieldEntries << " entries; far field from " << this->LastFarFromMillimetres
+     << " mm\n";
+  os << indent << "Last counts (translucent actors, surfels, lit cells, virtual points): "
+     << this->LastTranslucentActors << " " << this->LastSurfels << " " << this->LastLitCells
+     << " " << this->LastVirtualPoints << " (grid level " << this->LastGridLevel << ", spacing "
+     << this->LastGridSpacingMillimetres << " mm)\n";
+  os << indent << "Linear image: " << this->LinearWidth << " x " << this->LinearHeight << "\n";
 }

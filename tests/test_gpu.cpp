@@ -33,10 +33,10 @@ bool all_finite(const std::vector<Rgb>& B) {
 }
 
 // Slab lit and seen straight on: Lo at the centre = Ft(0) E Ft(0) R / pi, R the kernel's
-// integral over the slab (DESIGN section 2's disc closed form at the radius of a disc of the
-// slab's area, whose edge of half-spacing steps changes it by far less than 0.1 %); the slab
-// reaches the kernel's 1e-3 tail or 80 spacings, whichever is nearer (the densest slabs
-// would otherwise hold 400,000 surfels).
+// integral over the slab (Dipole::disc_reflectance, the closed form over a disc, at the radius
+// of a disc of the slab's area, whose edge of half-spacing steps changes it by far less than
+// 0.1 %); the slab reaches the kernel's 1e-3 tail or 80 spacings, whichever is nearer (the
+// densest slabs would otherwise hold 400,000 surfels).
 void expect_slab(const char* name, double spacing_in_z_r) {
   const Material material = Material::preset(name, 1.3);
   const Dipole dipole(material);

@@ -43,7 +43,7 @@ SurfelCloud load_scan(const std::string& path) {
 
 class GpuVsReference : public ::testing::TestWithParam<ScanCase> {};
 
-// DESIGN section 7 metric at 3000 points of each scan, the reference cached per scan,
+// The project's error metric (core/error_metric.h) at 3000 points of each scan, the reference cached per scan,
 // material and light. Bars: mean < 1 %, p99 < 5 % on every scan; mean < 0.5 % on the Stanford
 // objects.
 TEST_P(GpuVsReference, MeetsItsBars) {

@@ -1,4 +1,5 @@
-// DESIGN section 7's hard inputs: each gives finite, correct values or a clear refusal.
+// Hard inputs (no absorption, eta 1, tiny and huge kernels, far origins, thin parts, bad
+// normals): each gives finite, correct values or a clear refusal.
 #include <gtest/gtest.h>
 
 #include <cmath>

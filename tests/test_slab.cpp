@@ -1,4 +1,4 @@
-// The flat slab of DESIGN section 2: far from its edge, lit and seen straight on, the outgoing
+// The flat slab: far from its edge, lit and seen straight on, the outgoing
 // radiance is Ft(0) E Ft(0) R_total / pi. The reference must meet it whatever the surfel
 // spacing, from z_r / 4 to 100 z_r (a room scan's spacing in marble).
 #include <gtest/gtest.h>

@@ -1,0 +1,61 @@
+// Step 2 as a kernel strategy: what it bakes when the geometry, the material or a setting
+// changes, what it asks of the light maps, what a light move runs, and how it hands each
+// surfel's B to the view. The strategies are rows of one table (sssStep2.cxx); a new one is a
+// row there, its class and its shaders (and its name in core/quality_settings.h).
+#ifndef sssStep2_h
+#define sssStep2_h
+
+#include "quality_settings.h"
+#include "sssLightMaps.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkWindow;
+
+namespace sss
+{
+
+class Dipole;
+class SurfelResolve;
+struct LocalSurfels;
+
+// What the steps of one update did and measured.
+struct StepReport
+{
+  bool bake = false, illumination = false, surfels = false;
+  double seconds_bake = 0, seconds_illumination = 0, seconds_surfels = 0;
+  double seconds_cells = 0, seconds_B = 0;  // within seconds_surfels (NEAR_FAR)
+  std::size_t lit_cells = 0, virtual_point_count = 0, surfel_count = 0, near_entries = 0;
+  int map_width = 0, map_height = 0, grid_level = 0;
+  double texel_mm = 0, grid_spacing_mm = 0;
+  double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
+  std::vector<std::string> notes;             // lights drawn otherwise than asked, and why
+};
+
+class Step2
+{
+public:
+  virtual ~Step2() = default;
+  // `local` carries its surface fit and its albedo (none for white).
+  virtual bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
+    const Material& material, const Dipole& dipole, const QualitySettings& settings,
+    StepReport& report, std::string& error) = 0;
+  // What the light maps must hold for it (after its bake).
+  virtual LightMapRequest light_map_request(const QualitySettings& settings) const = 0;
+  // B for the maps just drawn, handed to `resolve` at the surfels' local `points`.
+  virtual bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
+    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+    std::string& error) = 0;
+  virtual void release(vtkWindow* window) = 0;
+};
+
+// The table's row for `strategy`.
+std::unique_ptr<Step2> make_step2(KernelStrategy strategy);
+
+}
+
+#endif
