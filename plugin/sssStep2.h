@@ -1,7 +1,6 @@
 // Step 2 as a kernel strategy: what it bakes when the geometry, the material or a setting
 // changes, what it asks of the light maps, what a light move runs, and how it hands each
-// surfel's B to the view. The strategies are rows of one table (sssStep2.cxx); a new one is a
-// row there, its class and its shaders (and its name in core/quality_settings.h).
+// surfel's B to the view. The strategies are rows of one table (sssKernelStrategies.h).
 #ifndef sssStep2_h
 #define sssStep2_h
 
@@ -52,9 +51,6 @@ public:
     std::string& error) = 0;
   virtual void release(vtkWindow* window) = 0;
 };
-
-// The table's row for `strategy`.
-std::unique_ptr<Step2> make_step2(KernelStrategy strategy);
 
 }
 

@@ -1,4 +1,4 @@
-#include "sssStep2.h"
+#include "sssKernelStrategies.h"
 
 #include "sssPaperVirtualPoints.h"
 #include "sssSurfelPipeline.h"
