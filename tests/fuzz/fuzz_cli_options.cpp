@@ -1,5 +1,5 @@
-// libFuzzer target: sss_render's option parsing (examples/cli_options.h) on any argument list,
-// the bytes split at NUL into at most 64 arguments. A bad list must end in
+// libFuzzer target: sss_render's option parsing (examples/support/cli_options.h) on any
+// argument list, the bytes split at NUL into at most 64 arguments. A bad list must end in
 // std::invalid_argument; any other exception, a crash or a sanitizer report is a defect.
 #include <cstdint>
 #include <stdexcept>
