@@ -90,6 +90,19 @@ Eigen::Vector3d LightView::hit_point(const DiscHits& hits, int i, int j) const {
          hits.depth[static_cast<std::size_t>(j) * perspective.width + i] * perspective.ray(i, j);
 }
 
+LightView fit_light_view(const LocalSurfels& surfels, const LocalLight& light, double texel,
+                         int max_size) {
+  LightView view;
+  view.from_point = light.positional;
+  if (view.from_point)
+    view.perspective = PerspectiveView::fit_pixel(surfels.positions, surfels.max_disc_radius(),
+                                                  light.position, texel, max_size);
+  else
+    view.ortho = OrthoView::fit_pixel(surfels.positions, surfels.max_disc_radius(),
+                                      light.direction, Eigen::Vector3d::UnitZ(), texel, max_size);
+  return view;
+}
+
 LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<Light>& lights,
                             const LightMapSettings& settings) {
   if (!(settings.texel_per_radius > 0.0) || !std::isfinite(settings.texel_per_radius) ||
@@ -105,20 +118,12 @@ LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<Light
   for (const Light& light : lights) {
     light.validate();
     const LocalLight local = LocalLight::of(light, surfels.frame);
-    LightView view;
-    view.from_point = local.positional;
-    if (view.from_point) {
-      view.perspective = PerspectiveView::fit_pixel(surfels.positions, surfels.max_disc_radius(),
-                                                    local.position, texel, settings.max_map_size);
-      out.hits.push_back(rasterize_discs(view.perspective, surfels.positions, surfels.normals,
-                                         surfels.radius, surfels.disc_radii));
-    } else {
-      view.ortho = OrthoView::fit_pixel(surfels.positions, surfels.max_disc_radius(),
-                                        local.direction, Eigen::Vector3d::UnitZ(), texel,
-                                        settings.max_map_size);
-      out.hits.push_back(rasterize_discs(view.ortho, surfels.positions, surfels.normals,
-                                         surfels.radius, surfels.disc_radii));
-    }
+    const LightView view = fit_light_view(surfels, local, texel, settings.max_map_size);
+    out.hits.push_back(view.from_point
+                           ? rasterize_discs(view.perspective, surfels.positions, surfels.normals,
+                                             surfels.radius, surfels.disc_radii)
+                           : rasterize_discs(view.ortho, surfels.positions, surfels.normals,
+                                             surfels.radius, surfels.disc_radii));
     out.views.push_back(view);
     out.lights.push_back(local);
   }

@@ -82,6 +82,12 @@ struct LightMapSettings {
   int max_map_size = 4096;
 };
 
+// The view of `light` over the surfels: texels `texel` mm wide (a point light's at the nearest
+// point it sees), at most max_size a side. Throws std::invalid_argument for a point light among
+// the points (PerspectiveView::fit_pixel).
+LightView fit_light_view(const LocalSurfels& surfels, const LocalLight& light, double texel,
+                         int max_size);
+
 struct LightMaps {
   std::vector<LightView> views;     // one per light
   std::vector<DiscHits> hits;       // per light: the disc each texel sees, and its depth

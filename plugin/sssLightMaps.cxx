@@ -26,6 +26,35 @@
 namespace sss
 {
 
+namespace
+{
+// The light maps' vertex shader: the paper's texels lifted by each disc's curvature, or the
+// pipeline's carrying the surfel's list texel in the colour. Built once.
+std::string VertexShader(bool paper)
+{
+  std::string vs = sss_surfel_vs;
+  vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Dec", "", true);
+  vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Impl", "", true);
+  vtkShaderProgram::Substitute(
+    vs, "//SSS::Shape::Dec", paper ? "in float curvatureMC;" : "in vec2 listTexelMC;", true);
+  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Impl",
+    paper ? "curvature_gs = curvatureMC;" : "colour_gs = vec4(listTexelMC, 0.0, 0.0);", true);
+  return vs;
+}
+
+const std::string& LightMapVertexShader(bool paper)
+{
+  static const std::string vs[2] = { VertexShader(false), VertexShader(true) };
+  return vs[paper ? 1 : 0];
+}
+
+const std::string& PaperFragmentShader()
+{
+  static const std::string fs = shader_with_pieces(sss_illumination_fs, "");
+  return fs;
+}
+}
+
 LightMapAtlas GpuLightMaps::atlas() const
 {
   LightMapAtlas a;
@@ -96,7 +125,7 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
 {
   if (lights.size() > static_cast<std::size_t>(kMaxLights))
   {
-    error = "at most " + std::to_string(kMaxLights) + " directional lights are supported";
+    error = "at most " + std::to_string(kMaxLights) + " lights are supported";
     return false;
   }
   const bool paper = request.paper;
@@ -112,31 +141,22 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
     LightMapAtlas::Map map;
     map.light = LocalLight::of(light.light, local.frame);
     map.irradiance = light.irradiance;
-    map.view.from_point = map.light.positional;
     if (map.light.positional && paper)
     {
       report.notes.push_back("the paper's method takes a positional light as directional, from "
                              "its focal point towards it");
-      map.light.positional = map.view.from_point = false;
+      map.light.positional = false;
     }
-    if (map.view.from_point)
+    try
     {
-      try
-      {
-        map.view.perspective = PerspectiveView::fit_pixel(
-          local.positions, local.max_disc_radius(), map.light.position, texel, max_size);
-      }
-      catch (const std::invalid_argument& e)
-      {
-        report.notes.push_back(std::string(e.what()) +
-          "; it is taken as directional, from its focal point towards it");
-        map.light.positional = map.view.from_point = false;
-      }
+      map.view = fit_light_view(local, map.light, texel, max_size);
     }
-    if (!map.view.from_point)
+    catch (const std::invalid_argument& e)  // a point light among the points
     {
-      map.view.ortho = OrthoView::fit_pixel(local.positions, local.max_disc_radius(),
-        map.light.direction, Eigen::Vector3d::UnitZ(), texel, max_size);
+      report.notes.push_back(std::string(e.what()) +
+        "; it is taken as directional, from its focal point towards it");
+      map.light.positional = false;
+      map.view = fit_light_view(local, map.light, texel, max_size);
     }
     map.x = atlas_w;
     atlas_w += map.width();
@@ -190,19 +210,9 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-  // The paper's texels lifted by each disc's curvature; the pipeline's carry the surfel's list
-  // texel in the colour.
-  std::string vs = sss_surfel_vs;
-  vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Dec", "", true);
-  vtkShaderProgram::Substitute(vs, "//SSS::Radiance::Impl", "", true);
-  vtkShaderProgram::Substitute(
-    vs, "//SSS::Shape::Dec", paper ? "in float curvatureMC;" : "in vec2 listTexelMC;", true);
-  vtkShaderProgram::Substitute(vs, "//SSS::Shape::Impl",
-    paper ? "curvature_gs = curvatureMC;" : "colour_gs = vec4(listTexelMC, 0.0, 0.0);", true);
-  const std::string fs =
-    paper ? shader_with_pieces(sss_illumination_fs, "") : sss_light_map_surfel_fs;
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), sss_surfel_gs);
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    LightMapVertexShader(paper).c_str(),
+    paper ? PaperFragmentShader().c_str() : sss_light_map_surfel_fs, sss_surfel_gs);
   if (!program)
   {
     error = "the illumination-map shaders did not compile";

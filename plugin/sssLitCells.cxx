@@ -212,7 +212,7 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
 {
   const int lights = static_cast<int>(maps.maps.size());
   allocate(window, list.width(), list.height(), std::max(lights, 1));
-  const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs,
+  static const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs,
     std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table);
   vtkShaderProgram* irradiance = ready_quad(irradiance_quad_, window, irradiance_fs.c_str());
   vtkShaderProgram* reduce =

@@ -208,9 +208,8 @@ bool PaperVirtualPoints::light(vtkOpenGLRenderWindow* window, const GpuLightMaps
 {
   const VirtualGrid& grid = *grid_;
   ReceiverList& receivers = *receivers_;
-  const std::string gather =
-    std::string(sss_light_maps) + "\n" + sss_dipole + "\n" + sss_gather_paper;
-  const std::string fs = shader_with_pieces(sss_paper_taps_fs, gather);
+  static const std::string fs = shader_with_pieces(sss_paper_taps_fs,
+    std::string(sss_light_maps) + "\n" + sss_dipole + "\n" + sss_gather_paper);
   vtkShaderProgram* taps = ready_quad(taps_quad_, window, fs.c_str());
   if (!taps)
   {

@@ -66,6 +66,11 @@ std::vector<GpuLight> gather_scene_lights(vtkRenderer* renderer, std::vector<std
   return lights;
 }
 
+double model_scale(vtkMatrix4x4* model_to_world)
+{
+  return std::cbrt(std::fabs(model_to_world->Determinant()));
+}
+
 std::vector<GpuLight> lights_in_model_frame(
   const std::vector<GpuLight>& world, vtkMatrix4x4* model_to_world)
 {
@@ -79,7 +84,7 @@ std::vector<GpuLight> lights_in_model_frame(
   }
   const Eigen::Matrix3d linear = m.block<3, 3>(0, 0);
   const Eigen::Matrix3d inverse = linear.inverse();
-  const double scale = std::cbrt(std::fabs(linear.determinant()));  // world units per model unit
+  const double scale = model_scale(model_to_world);
   std::vector<GpuLight> local = world;
   for (GpuLight& g : local)
   {

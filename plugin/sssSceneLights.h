@@ -20,6 +20,9 @@ namespace sss
 // and why.
 std::vector<GpuLight> gather_scene_lights(vtkRenderer* renderer, std::vector<std::string>& notes);
 
+// World units per model unit of a model matrix (a rotation, a uniform scale and a translation).
+double model_scale(vtkMatrix4x4* model_to_world);
+
 // The same lights in the frame of an actor with this model matrix (a rotation, a uniform scale
 // and a translation): directions, positions, and attenuation per model unit.
 std::vector<GpuLight> lights_in_model_frame(

@@ -167,7 +167,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& li
   report.seconds_cells = clock.lap();
 
   // B at every surfel: the near field's table, then the far field's walk.
-  const std::string gather_fs = shader_with_pieces(sss_near_field_fs,
+  static const std::string gather_fs = shader_with_pieces(sss_near_field_fs,
     std::string(sss_surfel_list) + "uniform int lightCount;\n" + sss_dipole + sss_near_field +
       sss_far_field);
   vtkShaderProgram* gather = ready_quad(g.gather_quad, window, gather_fs.c_str());

@@ -198,9 +198,8 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
     }
     seen.insert(actor);
     const std::vector<sss::GpuLight> local = sss::lights_in_model_frame(lights, actor->GetMatrix());
-    const double scale = std::cbrt(std::fabs(actor->GetMatrix()->Determinant()));
     sss::Material core = sss::core_material(*material);
-    core.mm_per_unit *= scale;
+    core.mm_per_unit *= sss::model_scale(actor->GetMatrix());
     auto& state = impl.States[actor];
     if (!state)
     {
