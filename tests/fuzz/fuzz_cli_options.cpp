@@ -24,7 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::string& a : args) argv.push_back(a.data());
   try {
     const sss::cli::Options o = sss::cli::parse(static_cast<int>(argv.size()), argv.data());
-    if (o.width < 1 || o.height < 1 || o.light_dirs.empty() || o.light_dirs.size() > 4)
+    const std::size_t lights = o.light_dirs.size() + o.point_lights.size();
+    if (o.width < 1 || o.height < 1 || lights < 1 || lights > 4)
       __builtin_trap();  // parse promises these
   } catch (const std::invalid_argument&) {
   }
