@@ -48,6 +48,11 @@ struct DipoleTerm {
 };
 DipoleTerm dipole_term(double z, double s_tr, double d);
 
+// Sources beyond a kernel's support radius at this fraction carry less than it of the kernel's
+// integral: the step 2 GPU path skips them, and a distributed cloud's pieces exchange the
+// surfels within this reach of each other.
+constexpr double kKernelSupportFraction = 1e-7;
+
 struct Dipole {
   std::array<DipoleChannel, 3> channel;
   explicit Dipole(const Material& material);

@@ -31,12 +31,6 @@
 namespace sss
 {
 
-namespace
-{
-// Sources beyond this distance carry less than this fraction of the kernel's integral.
-constexpr double kSupportFraction = 1e-7;
-}
-
 struct SurfelPipeline::Gpu
 {
   std::unique_ptr<Dipole> dipole;
@@ -123,8 +117,8 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
   g.settings = settings;
   g.radius = local.radius;
   g.dipole = std::make_unique<Dipole>(material);
-  g.support = g.dipole->max_support_radius(kSupportFraction);
-  g.split = NearFarSplit::choose(*g.dipole, local.radius > 0.0 ? local.radius : 1.0, kSupportFraction);
+  g.support = g.dipole->max_support_radius(kKernelSupportFraction);
+  g.split = NearFarSplit::choose(*g.dipole, local.radius > 0.0 ? local.radius : 1.0, kKernelSupportFraction);
   SurfelCells cells;
   NearFieldWeights weights;
   try

@@ -1,17 +1,64 @@
 #include "sssSurfelPreparation.h"
 
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
 namespace sss
 {
+namespace
+{
+
+// Puts the kept points that VTK's ghost array marks as duplicates (another piece owns them)
+// after the owned ones, keeping each group's order; returns how many are owned.
+std::size_t owned_first(SurfelCloud& cloud, vtkPolyData* input)
+{
+  vtkDataArray* ghosts = input->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+  if (!ghosts || ghosts->GetNumberOfComponents() != 1)
+  {
+    return cloud.size();
+  }
+  auto is_ghost = [&](std::size_t k) {
+    const auto flags = static_cast<unsigned>(ghosts->GetComponent(
+      static_cast<vtkIdType>(cloud.input_index[k]), 0));
+    return (flags & vtkDataSetAttributes::DUPLICATEPOINT) != 0;
+  };
+  std::vector<std::size_t> order(cloud.size());
+  std::iota(order.begin(), order.end(), std::size_t{ 0 });
+  const auto split = std::stable_partition(
+    order.begin(), order.end(), [&](std::size_t k) { return !is_ghost(k); });
+  const auto owned = static_cast<std::size_t>(split - order.begin());
+  if (owned == cloud.size())
+  {
+    return owned;
+  }
+  auto permute = [&order](auto& values) {
+    if (values.empty())
+    {
+      return;
+    }
+    auto copy = values;
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      values[k] = copy[order[k]];
+    }
+  };
+  permute(cloud.positions);
+  permute(cloud.normals);
+  permute(cloud.radii);
+  permute(cloud.input_index);
+  return owned;
+}
+
+}
 
 PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
   vtkUnsignedCharArray* colours, const std::array<std::uint8_t, 4>& fallback)
@@ -73,6 +120,7 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
     prepared.error = "no point has a finite position and normal (" + prepared.report.summary() + ")";
     return prepared;
   }
+  prepared.drawn = owned_first(cloud, input);
   if (choice.radius > 0.0)
   {
     cloud.radius = choice.radius;

@@ -30,6 +30,8 @@ struct PreparedSurfels
   bool per_point_radii = false;               // cloud.radii differ (else all are view_radius)
   double uncovered = 0.0;                     // measured at view_radius (automatic, uniform)
   double spacing_spread = 1.0;
+  std::size_t drawn = 0;                      // the first `drawn` kept points are drawn; the
+                                              // rest are ghosts (lit and scattering only)
   std::string error;                          // why nothing can be drawn, or empty
 };
 

@@ -365,7 +365,16 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
         return false;
       }
     }
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
+    // Ghosts (another piece's surfels) hide what lies behind them (1) and cover pixels (2),
+    // so that a piece's edge does not fade like a silhouette; their colour is that piece's.
+    const auto owned = static_cast<GLsizei>(prepared.drawn);
+    program->SetUniformi("coverageOnly", 0);
+    glDrawArrays(GL_POINTS, 0, splatPass == 1 ? static_cast<GLsizei>(n) : owned);
+    if (splatPass == 2 && prepared.drawn < n)
+    {
+      program->SetUniformi("coverageOnly", 1);
+      glDrawArrays(GL_POINTS, owned, static_cast<GLsizei>(n) - owned);
+    }
     vao->Release();
     return true;
   };

@@ -21,7 +21,11 @@
  * replacement protocol). Cells are ignored: every point is a surfel.
  *
  * Points need 3-component point normals; points with a non-finite position or normal, or a
- * zero normal, are left out (the report says how many).
+ * zero normal, are left out (the report says how many). Points that VTK's ghost array
+ * (vtkGhostType) marks DUPLICATEPOINT belong to another piece of a distributed cloud: they
+ * are lit and scatter light to the others, and in blended splatting they hide what lies
+ * behind them and cover pixels (so that the piece's edge is not faded like a silhouette), but
+ * they give no colour: the rank that owns them draws them.
  */
 #ifndef vtkSurfelMapper_h
 #define vtkSurfelMapper_h

@@ -8,6 +8,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkProp.h"
 
+#include "dipole.h"
 #include "material.h"
 
 #include <stdexcept>
@@ -86,6 +87,15 @@ std::string vtkTranslucentMaterial::Validate() const
     return error.what();
   }
   return {};
+}
+
+double vtkTranslucentMaterial::GetKernelReachMillimetres() const
+{
+  if (!this->Validate().empty())
+  {
+    return 0.0;
+  }
+  return sss::Dipole(sss::core_material(*this)).max_support_radius(sss::kKernelSupportFraction);
 }
 
 void vtkTranslucentMaterial::ApplyTo(vtkProp* prop)

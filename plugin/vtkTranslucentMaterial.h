@@ -71,6 +71,13 @@ public:
    */
   std::string Validate() const;
 
+  /**
+   * How far the kernel reaches, in mm: beyond this distance the sources of every channel carry
+   * less than 1e-7 of its integral (the distance past which the pass ignores them). 0 when the
+   * material is invalid.
+   */
+  double GetKernelReachMillimetres() const;
+
   /** Marks the actor translucent with this material (replaces an earlier one). */
   void ApplyTo(vtkProp* prop);
   /** Removes the mark. */

@@ -14,6 +14,7 @@ flat in vec4 colour;
 flat in float rimMargin;
 
 uniform bool orthographic;
+uniform bool coverageOnly;  // pass 2, ghost surfels: coverage alone (vtkSurfelMapper)
 
 //VTK::Output::Dec
 
@@ -33,8 +34,9 @@ void main()
   float w = exp(-2.0 * r2);  // e^-2 at the rim
   vec3 towardsViewer = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-pointVC);
   vec3 n = dot(normalVC, towardsViewer) < 0.0 ? -normalVC : normalVC;  // shading is two-sided
-  gl_FragData[0] = vec4(w * colour.rgb, w);
-  gl_FragData[1] = vec4(w * n, coverage);  // alpha blended by its maximum (vtkSurfelMapper)
+  gl_FragData[0] = coverageOnly ? vec4(0.0) : vec4(w * colour.rgb, w);
+  // alpha blended by its maximum (vtkSurfelMapper)
+  gl_FragData[1] = coverageOnly ? vec4(0.0, 0.0, 0.0, coverage) : vec4(w * n, coverage);
 #else
   if (r2 > 1.0)
   {

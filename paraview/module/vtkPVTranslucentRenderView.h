@@ -1,0 +1,45 @@
+/**
+ * @class vtkPVTranslucentRenderView
+ * @brief ParaView's "Translucent Render View": a render view whose renderer draws through a
+ * vtkSubsurfacePass, so that "Translucent Surfels" representations scatter the view's lights.
+ *
+ * Everything else is ParaView's render view (lights, camera, IceT compositing over MPI, which
+ * composites the pass's output with its depth). The pass's settings are the view's: a quality
+ * preset and the exposure of the tone mapping.
+ */
+#ifndef vtkPVTranslucentRenderView_h
+#define vtkPVTranslucentRenderView_h
+
+#include "sssParaViewModule.h"
+
+#include "vtkNew.h"
+#include "vtkPVRenderView.h"
+
+class vtkSubsurfacePass;
+
+class SSSPARAVIEW_EXPORT vtkPVTranslucentRenderView : public vtkPVRenderView
+{
+public:
+  static vtkPVTranslucentRenderView* New();
+  vtkTypeMacro(vtkPVTranslucentRenderView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** interactive, balanced (the default) or accurate (vtkSubsurfacePass::SetQualityPreset). */
+  void SetQualityPreset(const char* name);
+  /** sRGB(clamp(Exposure * Lo)) for translucent pixels (default 1). */
+  void SetExposure(double exposure);
+
+  vtkSubsurfacePass* GetSubsurfacePass();
+
+protected:
+  vtkPVTranslucentRenderView();
+  ~vtkPVTranslucentRenderView() override;
+
+  vtkNew<vtkSubsurfacePass> Subsurface;
+
+private:
+  vtkPVTranslucentRenderView(const vtkPVTranslucentRenderView&) = delete;
+  void operator=(const vtkPVTranslucentRenderView&) = delete;
+};
+
+#endif

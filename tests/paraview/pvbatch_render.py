@@ -1,0 +1,127 @@
+"""Renders a point cloud with normals as Translucent Surfels in a Translucent Render View, under
+pvbatch (one rank or `mpirun -np N pvbatch`), with the camera, light and tone mapping that
+sss_render uses, so that the two images can be compared.
+
+  pvbatch pvbatch_render.py PLUGIN CLOUD OUT.png [--material M] [--scale MM] [--size WxH]
+      [--view-dir X,Y,Z] [--up X,Y,Z] [--light-dir X,Y,Z] [--split N]
+
+CLOUD is a .ply or .vtp of points with normals. --split N cuts it along x into N pieces of
+equal counts (a .pvtp beside OUT), which ParaView's reader hands out one per rank.
+Prints one line per rank with its surfels, the ghosts it received and the bytes it sent.
+"""
+import argparse
+import os
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager as sm
+
+
+def vector(text):
+    return [float(v) for v in text.split(",")]
+
+
+def split_along_x(cloud_path, pieces, stem):
+    """Writes `pieces` .vtp files of the cloud cut along x, and the .pvtp naming them."""
+    from paraview.vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkIOPLY import vtkPLYReader
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+    import numpy
+
+    reader = vtkPLYReader() if cloud_path.endswith(".ply") else vtkXMLPolyDataReader()
+    reader.SetFileName(cloud_path)
+    reader.Update()
+    cloud = reader.GetOutput()
+    xyz = vtk_to_numpy(cloud.GetPoints().GetData())
+    normals = vtk_to_numpy(cloud.GetPointData().GetNormals())
+    order = numpy.argsort(xyz[:, 0], kind="stable")
+    names = []
+    for k, part in enumerate(numpy.array_split(order, pieces)):
+        part = numpy.sort(part)
+        piece = vtkPolyData()
+        points = vtkPoints()
+        points.SetData(numpy_to_vtk(numpy.ascontiguousarray(xyz[part]), deep=True))
+        piece.SetPoints(points)
+        n = numpy_to_vtk(numpy.ascontiguousarray(normals[part]), deep=True)
+        n.SetName("Normals")
+        piece.GetPointData().SetNormals(n)
+        name = "%s_%d.vtp" % (os.path.basename(stem), k)
+        writer = vtkXMLPolyDataWriter()
+        writer.SetFileName(os.path.join(os.path.dirname(stem), name))
+        writer.SetInputData(piece)
+        writer.Write()
+        names.append(name)
+    with open(stem + ".pvtp", "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="0.1">\n'
+                '<PPolyData GhostLevel="0">\n<PPoints><PDataArray type="Float32" '
+                'NumberOfComponents="3"/></PPoints>\n<PPointData Normals="Normals">'
+                '<PDataArray type="Float32" Name="Normals" NumberOfComponents="3"/>'
+                '</PPointData>\n')
+        for name in names:
+            f.write('<Piece Source="%s"/>\n' % name)
+        f.write("</PPolyData>\n</VTKFile>\n")
+    return stem + ".pvtp"
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("plugin")
+    p.add_argument("cloud")
+    p.add_argument("output")
+    p.add_argument("--material", default="marble")
+    p.add_argument("--scale", type=float, default=1.0)
+    p.add_argument("--size", default="400x400")
+    p.add_argument("--view-dir", default="0,-1,0.6")
+    p.add_argument("--up", default="0,0,1")
+    p.add_argument("--light-dir", default="-0.3,0.5,0.8")
+    p.add_argument("--split", type=int, default=0)
+    a = p.parse_args()
+
+    LoadPlugin(a.plugin, ns=globals())
+    pm = sm.vtkProcessModule.GetProcessModule()
+    cloud = a.cloud
+    if a.split > 0:
+        stem = os.path.splitext(a.output)[0] + "_pieces"
+        # One rank writes the pieces; all read them (a .pvtp is read in parallel).
+        if pm.GetPartitionId() == 0:
+            split_along_x(a.cloud, a.split, stem)
+        cloud = stem + ".pvtp"
+    source = OpenDataFile(cloud)
+
+    view = CreateView("TranslucentRenderView")
+    width, height = (int(v) for v in a.size.split("x"))
+    view.ViewSize = [width, height]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0, 0, 0]
+    view.UseLight = 0  # no light kit: the one light below, as sss_render's
+    view.SubsurfaceExposure = 1.0
+    light = AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Directional"
+    light.Position = vector(a.light_dir)
+    light.FocalPoint = [0, 0, 0]
+    light.Intensity = 1.0
+
+    display = Show(source, view)
+    display.SetRepresentationType("Translucent Surfels")
+    display.TranslucentMaterial = a.material
+    display.MillimetresPerUnit = a.scale
+    # sss_render's camera: looking at the bounds' centre along -view_dir, then fitted.
+    source.UpdatePipeline()
+    b = source.GetDataInformation().GetBounds()
+    centre = [(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2]
+    d = vector(a.view_dir)
+    norm = sum(v * v for v in d) ** 0.5
+    view.CameraFocalPoint = centre
+    view.CameraPosition = [centre[i] + d[i] / norm for i in range(3)]
+    view.CameraViewUp = vector(a.up)
+    view.CameraViewAngle = 30
+    view.ResetCamera()
+    Render(view)
+    SaveScreenshot(a.output, view)
+
+
+if __name__ == "__main__":
+    main()
