@@ -16,7 +16,7 @@ bash scripts/fuzz.sh
 echo "== ASan + UBSan build: core, the PCL glue, sss_render, and the GPU path on EGL and OSMesa"
 mkdir -p build-sanitize
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSS_SANITIZE=ON \
-  -DSSS_BUILD_EXAMPLES=ON -DSSS_WRAP_PYTHON=OFF > build-sanitize/configure.log 2>&1 \
+  -DSSS_BUILD_EXAMPLES=ON -DSSS_WRAP_PYTHON=OFF -DSSS_PARAVIEW_PLUGIN=OFF > build-sanitize/configure.log 2>&1 \
   || { cat build-sanitize/configure.log; exit 1; }
 cmake --build build-sanitize -j"$(nproc)" --target sss_core_tests sss_pcl_tests sss_render \
   sss_render_input_tests sss_gpu_tests sss_gpu_splat_tests sss_backend_tests
