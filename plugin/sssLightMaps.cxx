@@ -15,12 +15,14 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
+#include "vtkSubsurfacePieces.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace sss
@@ -133,6 +135,9 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
   // a disc radius, at most MaxMapSize a side.
   const double texel = paper ? 1e-9 : request.texel_per_radius * local.radius;
   const int max_size = paper ? kPaperMapSize : request.max_map_size;
+  vtkSubsurfacePieces* pieces =
+    !paper && request.pieces && request.pieces->GetNumberOfPieces() > 1 ? request.pieces : nullptr;
+  std::vector<PieceMap> fits;
   maps_.clear();
   report.notes.clear();
   int atlas_w = 0, atlas_h = 1;
@@ -147,16 +152,31 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
                              "its focal point towards it");
       map.light.positional = false;
     }
-    try
+    if (pieces)
     {
-      map.view = fit_light_view(local, map.light, texel, max_size);
+      if (map.light.positional)
+      {
+        report.notes.push_back("a cloud split into pieces takes a positional light as "
+                               "directional, from its focal point towards it");
+        map.light.positional = false;
+      }
+      fits.push_back(fit_over_pieces(pieces, &local, map.light.direction, texel, max_size));
+      map.view = LightView{};
+      map.view.ortho = fits.back().view;
     }
-    catch (const std::invalid_argument& e)  // a point light among the points
+    else
     {
-      report.notes.push_back(std::string(e.what()) +
-        "; it is taken as directional, from its focal point towards it");
-      map.light.positional = false;
-      map.view = fit_light_view(local, map.light, texel, max_size);
+      try
+      {
+        map.view = fit_light_view(local, map.light, texel, max_size);
+      }
+      catch (const std::invalid_argument& e)  // a point light among the points
+      {
+        report.notes.push_back(std::string(e.what()) +
+          "; it is taken as directional, from its focal point towards it");
+        map.light.positional = false;
+        map.view = fit_light_view(local, map.light, texel, max_size);
+      }
     }
     map.x = atlas_w;
     atlas_w += map.width();
@@ -317,10 +337,53 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(buffers.count));
   }
   vao->Release();
+  if (pieces)
+  {
+    combine_pieces(pieces, fits, reach);
+  }
   fbo_->RemoveColorAttachments(targets);
   fbo_->RemoveDepthAttachment();
   state->PopFramebufferBindings();
   return true;
+}
+
+long GpuLightMaps::combine_pieces(
+  vtkSubsurfacePieces* pieces, const std::vector<PieceMap>& fits, double reach)
+{
+  const auto texels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  std::vector<float> depth(texels), surfel(2 * texels);
+  fbo_->ActivateReadBuffer(0);
+  glReadPixels(0, 0, width_, height_, GL_RG, GL_FLOAT, surfel.data());
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  long foreign = 0;
+  for (std::size_t k = 0; k < fits.size(); ++k)
+  {
+    foreign += mark_foreign_texels(
+      pieces, fits[k], reach, depth.data(), surfel.data(), width_, maps_[k].x);
+  }
+  surfel_->Bind();
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RG, GL_FLOAT, surfel.data());
+  surfel_->Deactivate();
+  return foreign;
+}
+
+void GpuLightMaps::take_part_without_surfels(
+  vtkSubsurfacePieces* pieces, const std::vector<GpuLight>& lights, int max_map_size)
+{
+  if (!pieces || pieces->GetNumberOfPieces() < 2)
+  {
+    return;
+  }
+  std::vector<PieceMap> fits;
+  for (const GpuLight& light : lights)
+  {
+    fits.push_back(fit_over_pieces(pieces, nullptr, light.light.direction,
+      std::numeric_limits<double>::infinity(), max_map_size));
+  }
+  for (const PieceMap& fit : fits)
+  {
+    mark_foreign_texels(pieces, fit, 1.0, nullptr, nullptr, 0, 0);
+  }
 }
 
 }

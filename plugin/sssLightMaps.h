@@ -7,6 +7,7 @@
 #define sssLightMaps_h
 
 #include "light_map.h"
+#include "sssLightMapPieces.h"
 #include "material.h"
 #include "sssGpuHelpers.h"
 
@@ -21,6 +22,7 @@
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkSubsurfacePieces;
 class vtkWindow;
 
 namespace sss
@@ -63,6 +65,7 @@ struct LightMapRequest
   double texel_per_radius = 0;   // otherwise: texel over the disc radius ...
   int max_map_size = 0;          // ... at most this many texels a side
   vtkOpenGLBufferObject* list_texel = nullptr;  // each surfel's list texel (not the paper)
+  vtkSubsurfacePieces* pieces = nullptr;  // the cloud's other pieces (not the paper), or none
 };
 
 struct LightMapReport
@@ -80,6 +83,11 @@ public:
     const LightMapRequest& request, const Material& material, bool albedo_from_colour,
     LightMapReport& report, std::string& error);
 
+  // A piece without surfels still takes part in the other pieces' reductions of the maps of
+  // these lights (sssLightMapPieces.h).
+  static void take_part_without_surfels(
+    vtkSubsurfacePieces* pieces, const std::vector<GpuLight>& lights, int max_map_size);
+
   LightMapAtlas atlas() const;
   // The paper's maps: point, power and normal per texel.
   vtkTextureObject* point() const { return point_; }
@@ -91,6 +99,9 @@ public:
   void release(vtkWindow* window);
 
 private:
+  // Over pieces: keeps in each texel the surface nearest the light over all of them.
+  long combine_pieces(vtkSubsurfacePieces* pieces, const std::vector<PieceMap>& fits,
+    double reach);
   // Keeps the atlas while it is large enough and at most four times the area needed.
   void allocate(vtkOpenGLRenderWindow* window, bool paper, int width, int height);
 

@@ -9,12 +9,30 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkSubsurfacePieces.h"
 #include "vtkTextureObject.h"
 
 #include <memory>
 
 namespace sss
 {
+namespace
+{
+
+// Whether step 1 must run on any piece (every piece then runs it); `here` alone without pieces.
+bool agree_over_pieces(vtkSubsurfacePieces* pieces, bool here)
+{
+  if (!pieces || pieces->GetNumberOfPieces() < 2)
+  {
+    return here;
+  }
+  double not_here = here ? 0.0 : 1.0;
+  pieces->MinimumOverPieces(&not_here, 1);
+  return not_here == 0.0;
+}
+
+}
+
 
 struct TranslucentActorState::Gpu
 {
@@ -58,6 +76,15 @@ int TranslucentActorState::list_width() const
   return gpu_->resolve.width();
 }
 
+void TranslucentActorState::take_part_without_surfels(vtkSubsurfacePieces* pieces,
+  const std::vector<GpuLight>& lights, const QualitySettings& settings)
+{
+  if (agree_over_pieces(pieces, false) && settings.strategy != KernelStrategy::Paper)
+  {
+    GpuLightMaps::take_part_without_surfels(pieces, lights, settings.max_map_size);
+  }
+}
+
 void TranslucentActorState::release(vtkWindow* window)
 {
   gpu_->release(window);
@@ -68,7 +95,7 @@ void TranslucentActorState::release(vtkWindow* window)
 bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
   vtkMTimeType surfels_time, const Material& material, bool albedo_from_colour,
   const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-  StepReport& report, std::string& error)
+  vtkSubsurfacePieces* pieces, StepReport& report, std::string& error)
 {
   std::vector<double> key;
   for (int c = 0; c < 3; ++c)
@@ -79,7 +106,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   const bool geometry_changed = !valid_ || surfels_time != geometry_time_ ||
     key != material_key_ || !(settings == geometry_settings_) ||
     albedo_from_colour != geometry_albedo_;
-  const bool light_changed = geometry_changed || !(lights == lights_);
+  const bool light_changed = agree_over_pieces(pieces, geometry_changed || !(lights == lights_));
   report.surfel_count = surfels.cloud.size();
   if (!light_changed)
   {
@@ -104,8 +131,10 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   }
 
   LightMapReport maps;
-  if (!g.maps.render(window, g.buffers, g.local, lights, g.step2->light_map_request(settings),
-        material_, albedo_from_colour, maps, error))
+  LightMapRequest request = g.step2->light_map_request(settings);
+  request.pieces = pieces;
+  if (!g.maps.render(window, g.buffers, g.local, lights, request, material_, albedo_from_colour,
+        maps, error))
   {
     return false;
   }

@@ -23,6 +23,7 @@
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkSubsurfacePieces;
 class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -39,10 +40,17 @@ public:
 
   // Runs steps 1-2 where their inputs changed. `finish` waits for the GPU after each step so
   // that the reported times are real. Returns false with `error` set when it cannot run.
+  // With `pieces` (a cloud split over processes), step 1 runs on every piece when it must on
+  // any, and its maps are combined over them (sssLightMapPieces.h): collective.
   bool update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
     vtkMTimeType surfels_time, const Material& material, bool albedo_from_colour,
     const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-    StepReport& report, std::string& error);
+    vtkSubsurfacePieces* pieces, StepReport& report, std::string& error);
+
+  // What update does on the other pieces, for a piece whose actor has no surfels: takes part
+  // in the decision and, when step 1 runs, in the combination of the maps. Collective.
+  static void take_part_without_surfels(vtkSubsurfacePieces* pieces,
+    const std::vector<GpuLight>& lights, const QualitySettings& settings);
 
   // The per-surfel B texture (RGBA32F, surfel i at texel (i % width, i / width)).
   vtkTextureObject* surfel_radiance() const;

@@ -8,6 +8,7 @@
 #include "sss_dipole.h"
 #include "sss_subsurface_view_dec.h"
 #include "sss_subsurface_view_impl.h"
+#include "vtkSubsurfacePieces.h"
 #include "vtkSurfelMapper.h"
 #include "vtkTranslucentMaterial.h"
 
@@ -25,6 +26,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
@@ -37,6 +39,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <vector>
 
 vtkStandardNewMacro(vtkSubsurfacePass);
 
@@ -51,6 +54,8 @@ struct vtkSubsurfacePass::Internals
   std::set<std::string> Reported;
   std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> Precomputed;
   std::vector<sss::GpuLight> Lights;  // the renderer's, this frame, world frame
+  vtkSmartPointer<vtkSubsurfacePieces> Pieces;
+  bool Prepared = false;  // PrepareFrame ran steps 1-2; the next Render only draws
 
   void ReportOnce(vtkSubsurfacePass* self, const std::string& message, bool error)
   {
@@ -121,8 +126,20 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
     return;
   }
   sss::Stopwatch frameClock;
-  this->GatherLights(ren);
-  this->UpdateTranslucentActors(s, window);
+  if (this->Impl->Prepared)
+  {
+    this->Impl->Prepared = false;  // PrepareFrame ran steps 1-2 for this frame
+  }
+  else if (this->Impl->Pieces && this->Impl->Pieces->GetNumberOfPieces() > 1)
+  {
+    // Collective steps cannot run here (see PrepareFrame): translucent actors draw plain.
+    this->Impl->Ready.clear();
+  }
+  else
+  {
+    this->GatherLights(ren);
+    this->UpdateTranslucentActors(s, window);
+  }
   frameClock.lap();  // the view's time starts here
   int width, height, x0, y0;
   ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
@@ -140,6 +157,46 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
     }
     this->LastViewSeconds = frameClock.lap();
   }
+}
+
+void vtkSubsurfacePass::SetPieces(vtkSubsurfacePieces* pieces)
+{
+  if (this->Impl->Pieces != pieces)
+  {
+    this->Impl->Pieces = pieces;
+    this->Modified();
+  }
+}
+
+vtkSubsurfacePieces* vtkSubsurfacePass::GetPieces()
+{
+  return this->Impl->Pieces;
+}
+
+void vtkSubsurfacePass::PrepareFrame(vtkRenderer* ren)
+{
+  auto* window = ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
+  if (!window)
+  {
+    vtkErrorMacro(<< "PrepareFrame needs a renderer in an OpenGL render window");
+    return;
+  }
+  window->MakeCurrent();
+  std::vector<vtkProp*> props;
+  vtkCollectionSimpleIterator it;
+  ren->GetViewProps()->InitTraversal(it);
+  while (vtkProp* prop = ren->GetViewProps()->GetNextProp(it))
+  {
+    if (prop->GetVisibility())
+    {
+      props.push_back(prop);
+    }
+  }
+  vtkRenderState state(ren);
+  state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  this->GatherLights(ren);
+  this->UpdateTranslucentActors(&state, window);
+  this->Impl->Prepared = true;
 }
 
 void vtkSubsurfacePass::GatherLights(vtkRenderer* ren)
@@ -187,7 +244,10 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
     const sss::PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
     if (!surfels.error.empty())
     {
-      continue;  // the mapper reports it and draws nothing
+      // The mapper reports it and draws nothing; the other pieces' step 1 still needs this one.
+      sss::TranslucentActorState::take_part_without_surfels(
+        impl.Pieces, sss::lights_in_model_frame(lights, actor->GetMatrix()), settings);
+      continue;
     }
     if (lights.empty())
     {
@@ -235,7 +295,8 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
       continue;
     }
     if (!state->update(window, surfels, mapper->GetSurfelsTime(), core,
-          material->GetColoursAsAlbedo(), local, settings, this->MeasureStepTimes, report, error))
+          material->GetColoursAsAlbedo(), local, settings, this->MeasureStepTimes, impl.Pieces,
+          report, error))
     {
       impl.ReportOnce(this, "subsurface scattering is off for an actor: " + error, true);
       continue;
@@ -569,6 +630,8 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "KernelStrategy: " << this->GetKernelStrategyAsString() << "\n";
+  os << indent << "Pieces: "
+     << (this->Impl->Pieces ? this->Impl->Pieces->GetNumberOfPieces() : 1) << "\n";
   os << indent << "TexelPerRadius: " << this->TexelPerRadius << "\n";
   os << indent << "MaxMapSize: " << this->MaxMapSize << "\n";
   os << indent << "CellSamples: " << this->CellSamples << "\n";

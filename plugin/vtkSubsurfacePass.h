@@ -43,6 +43,7 @@ struct StepReport;
 
 class vtkActor;
 class vtkFloatArray;
+class vtkSubsurfacePieces;
 
 class SSSTRANSLUCENCY_EXPORT vtkSubsurfacePass : public vtkImageProcessingPass
 {
@@ -165,6 +166,26 @@ public:
    * mapper are skipped.
    */
   void SetPrecomputedRadiance(vtkActor* actor, vtkFloatArray* B);
+
+  ///@{
+  /**
+   * The other pieces of a cloud split over processes (vtkSubsurfacePieces): each light map is
+   * then fitted over all pieces and keeps the surface nearest the light over all of them, so
+   * that a piece in front of another shadows it. Positional lights are then taken as
+   * directional. Default none: the renderer's actors are the whole scene.
+   */
+  void SetPieces(vtkSubsurfacePieces* pieces);
+  vtkSubsurfacePieces* GetPieces();
+  ///@}
+
+  /**
+   * Runs steps 1-2 for the renderer's visible translucent actors now (the window's context
+   * must exist: after its first render); the next Render then only draws. With pieces, every
+   * process must call it before each frame: the reductions over pieces are collective, and a
+   * compositing pass (IceT) renders only the processes whose piece it sees, so they cannot
+   * happen inside Render, which without it draws translucent actors plain.
+   */
+  void PrepareFrame(vtkRenderer* renderer);
 
   ///@{
   /** Wait for the GPU after each step so the step times below are real (default off). */

@@ -2,14 +2,16 @@
 // surfel each texel sees (light_map_surfel_fs.glsl). Needs light_maps.glsl and
 // surfel_list.glsl.
 
-uniform sampler2D mapSurfel;   // xy: the seen surfel's texel in the surfel list, x < 0: none
+uniform sampler2D mapSurfel;   // xy: the seen surfel's texel in the surfel list; x = -1: none,
+                               // x = -2: another piece's surface (sssLightMapPieces.h)
 uniform float kappaLimitCell;  // 1/mm: the curvature clamp of a surfel's paraboloid (1 / radius)
 
 // Whether the light reaches point y of a surface with cosine cosI to the light and surface
 // thickness `thickness` (mm): the local surface of the disc the map sees at y's texel
 // (core/light_map.cpp seen_point: the texel centre's ray meets the disc's plane at offset d,
 // lifted kappa |d|^2 / 2 below it) passes within thickness / cos of y along the light, or the
-// texel sees no disc (nothing stands in front).
+// texel sees no disc (nothing stands in front); not where another piece of a distributed cloud
+// stands in front.
 bool lightReaches(int light, vec3 y, float cosI, float thickness)
 {
   vec4 rect = levelRect[light * SSS_MAX_LEVELS];
@@ -20,6 +22,10 @@ bool lightReaches(int light, vec3 y, float cosI, float thickness)
     return true;
   }
   vec2 seen = texelFetch(mapSurfel, ivec2(rect.xy) + ivec2(at), 0).xy;
+  if (seen.x < -1.5)
+  {
+    return false;  // another piece of the cloud stands in front, beyond the kernel's reach
+  }
   if (seen.x < 0.0)
   {
     return true;

@@ -1,7 +1,10 @@
 #include "vtkPVTranslucentRenderView.h"
 
+#include "vtkPVSubsurfacePieces.h"
 #include "vtkSubsurfacePass.h"
 
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVSynchronizedRenderer.h"
 
@@ -11,9 +14,31 @@ vtkPVTranslucentRenderView::vtkPVTranslucentRenderView()
 {
   // Inside IceT's compositing pass when there are several ranks, the renderer's pass otherwise.
   this->SynchronizedRenderers->SetRenderPass(this->Subsurface);
+  // Several ranks: each holds a piece, and light visibility is reduced over all of them.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    vtkNew<vtkPVSubsurfacePieces> pieces;
+    this->Subsurface->SetPieces(pieces);
+  }
 }
 
 vtkPVTranslucentRenderView::~vtkPVTranslucentRenderView() = default;
+
+void vtkPVTranslucentRenderView::Render(bool interactive, bool skip_rendering)
+{
+  if (!skip_rendering && !this->HasRendered)
+  {
+    // The first frame creates the window's context, which PrepareFrame needs.
+    this->Superclass::Render(interactive, skip_rendering);
+    this->HasRendered = true;
+  }
+  if (!skip_rendering)
+  {
+    this->Subsurface->PrepareFrame(this->GetRenderer());
+  }
+  this->Superclass::Render(interactive, skip_rendering);
+}
 
 void vtkPVTranslucentRenderView::SetQualityPreset(const char* name)
 {

@@ -4,7 +4,8 @@
  * vtkSubsurfacePass, so that "Translucent Surfels" representations scatter the view's lights.
  *
  * Everything else is ParaView's render view (lights, camera, IceT compositing over MPI, which
- * composites the pass's output with its depth). The pass's settings are the view's: a quality
+ * composites the pass's output with its depth). Over MPI the pass's light maps are reduced
+ * over the ranks (vtkPVSubsurfacePieces), so that one rank's piece shadows another's. The pass's settings are the view's: a quality
  * preset and the exposure of the tone mapping.
  */
 #ifndef vtkPVTranslucentRenderView_h
@@ -35,7 +36,12 @@ protected:
   vtkPVTranslucentRenderView();
   ~vtkPVTranslucentRenderView() override;
 
+  // Steps 1-2 on every rank before the frame (vtkSubsurfacePass::PrepareFrame): their
+  // reductions over ranks are collective, and IceT draws only the ranks whose piece it sees.
+  void Render(bool interactive, bool skip_rendering) override;
+
   vtkNew<vtkSubsurfacePass> Subsurface;
+  bool HasRendered = false;
 
 private:
   vtkPVTranslucentRenderView(const vtkPVTranslucentRenderView&) = delete;

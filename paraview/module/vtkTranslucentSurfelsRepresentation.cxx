@@ -5,7 +5,6 @@
 #include "vtkTranslucentMaterial.h"
 
 #include "vtkActor.h"
-#include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -185,6 +184,9 @@ int vtkTranslucentSurfelsRepresentation::RequestData(
   }
   const sss::GhostReport ghosts =
     sss::add_ghost_surfels(controller, piece, reach, this->Surfels);
+  // Each rank draws its own piece (distributed rendering is required below), so the mapper
+  // takes it here, before the view's first frame prepares steps 1-2.
+  this->Mapper->SetInputData(this->Surfels);
   this->GhostsReceived = ghosts.received;
   this->GhostsSent = ghosts.sent;
   this->GhostBytesSent = static_cast<vtkIdType>(ghosts.bytes_sent);
@@ -215,10 +217,6 @@ int vtkTranslucentSurfelsRepresentation::ProcessViewRequest(
     {
       vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds);
     }
-  }
-  else if (request_type == vtkPVView::REQUEST_RENDER())
-  {
-    this->Mapper->SetInputConnection(vtkPVRenderView::GetPieceProducer(inInfo, this));
   }
   return 1;
 }

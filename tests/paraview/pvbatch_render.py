@@ -6,8 +6,9 @@ sss_render uses, so that the two images can be compared.
       [--view-dir X,Y,Z] [--up X,Y,Z] [--light-dir X,Y,Z] [--split N]
 
 CLOUD is a .ply or .vtp of points with normals. --split N cuts it along x into N pieces of
-equal counts (a .pvtp beside OUT), which ParaView's reader hands out one per rank.
-Prints one line per rank with its surfels, the ghosts it received and the bytes it sent.
+equal counts, --cuts X1,X2,... at those x (a .pvtp beside OUT); ParaView's reader hands the
+pieces out one per rank. With -v=INFO each rank logs its surfels, the ghosts it received and
+the bytes it sent.
 """
 import argparse
 import os
@@ -20,8 +21,9 @@ def vector(text):
     return [float(v) for v in text.split(",")]
 
 
-def split_along_x(cloud_path, pieces, stem):
-    """Writes `pieces` .vtp files of the cloud cut along x, and the .pvtp naming them."""
+def split_along_x(cloud_path, pieces, cuts, stem):
+    """Writes the .vtp files of the cloud cut along x (into `pieces` of equal counts, or at
+    the x of `cuts`), and the .pvtp naming them."""
     from paraview.vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkPolyData
@@ -36,8 +38,12 @@ def split_along_x(cloud_path, pieces, stem):
     xyz = vtk_to_numpy(cloud.GetPoints().GetData())
     normals = vtk_to_numpy(cloud.GetPointData().GetNormals())
     order = numpy.argsort(xyz[:, 0], kind="stable")
+    if cuts:
+        parts = numpy.split(order, numpy.searchsorted(xyz[order, 0], cuts))
+    else:
+        parts = numpy.array_split(order, pieces)
     names = []
-    for k, part in enumerate(numpy.array_split(order, pieces)):
+    for k, part in enumerate(parts):
         part = numpy.sort(part)
         piece = vtkPolyData()
         points = vtkPoints()
@@ -76,16 +82,17 @@ def main():
     p.add_argument("--up", default="0,0,1")
     p.add_argument("--light-dir", default="-0.3,0.5,0.8")
     p.add_argument("--split", type=int, default=0)
+    p.add_argument("--cuts", default="")
     a = p.parse_args()
 
     LoadPlugin(a.plugin, ns=globals())
     pm = sm.vtkProcessModule.GetProcessModule()
     cloud = a.cloud
-    if a.split > 0:
+    if a.split > 0 or a.cuts:
         stem = os.path.splitext(a.output)[0] + "_pieces"
         # One rank writes the pieces; all read them (a .pvtp is read in parallel).
         if pm.GetPartitionId() == 0:
-            split_along_x(a.cloud, a.split, stem)
+            split_along_x(a.cloud, a.split, vector(a.cuts) if a.cuts else [], stem)
         cloud = stem + ".pvtp"
     source = OpenDataFile(cloud)
 

@@ -1,0 +1,1 @@
+#include "vtkSubsurfacePieces.h"
