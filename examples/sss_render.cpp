@@ -231,7 +231,7 @@ int run(const Options& o) {
         Lo[i][ch] = sss::fresnel_transmittance(material.eta[ch], cos_o) *
                     B->GetValue(static_cast<vtkIdType>(3 * i + ch));
     }
-    sss::cli::write_baked_ply(cloud.positions, Lo, o.bake_ply);
+    sss::cli::write_baked_ply(cloud.positions, cloud.normals, Lo, o.bake_ply);
   }
   if (o.frames > 0) {
     timings.light_static = sss::cli::time_light_static(scene, o.frames);

@@ -26,11 +26,14 @@ if [ -z "${DISPLAY:-}" ]; then
   # One Xvfb for all ranks, on the first free display, ready before they connect.
   n=90
   while [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ]; do n=$((n + 1)); done
-  Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp > /dev/null 2>&1 &
+  Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp -noreset > /dev/null 2>&1 &
   xvfb=$!
-  trap 'kill "$xvfb" 2> /dev/null || true' EXIT
-  for _ in $(seq 100); do [ -S "/tmp/.X11-unix/X$n" ] && break; sleep 0.1; done
-  [ -S "/tmp/.X11-unix/X$n" ] || { echo "$0: Xvfb did not start on :$n" >&2; exit 1; }
+  # Gone before this script ends, so that a next run cannot meet it on the same display.
+  trap 'kill "$xvfb" 2> /dev/null; wait "$xvfb" 2> /dev/null || true' EXIT
+  # Ready when a client can connect; -noreset: the server must not restart when that client
+  # (or a rank) disconnects while other ranks connect.
+  for _ in $(seq 200); do xdpyinfo -display ":$n" > /dev/null 2>&1 && break; sleep 0.05; done
+  xdpyinfo -display ":$n" > /dev/null 2>&1 || { echo "$0: Xvfb did not start on :$n" >&2; exit 1; }
   export DISPLAY=":$n"
 fi
 if [ "$ranks" -gt 1 ]; then

@@ -7,7 +7,7 @@ packages=(
   libeigen3-dev libflann-dev liblz4-dev zlib1g-dev libgtest-dev
   libvtk9-dev python3-vtk9 python3-numpy libpcl-dev
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
-  xvfb xauth libglx-mesa0
+  xvfb xauth libglx-mesa0 x11-utils
   python3-matplotlib
   clang libclang-rt-14-dev
   paraview paraview-dev openmpi-bin

@@ -1,4 +1,5 @@
-// The --bake output: a binary PLY with each point's position and outgoing radiance.
+// The --bake output: a binary PLY with each point's position, normal and outgoing radiance
+// (also a cloud with normals for programs that read PLY, ParaView among them).
 #pragma once
 
 #include <string>
@@ -8,9 +9,10 @@
 
 namespace sss::cli {
 
-// One vertex per point (double x, y, z; float red, green, blue). Written whole or not at all;
-// throws std::runtime_error on failure.
-void write_baked_ply(const std::vector<Eigen::Vector3d>& positions, const std::vector<Rgb>& Lo,
+// One vertex per point (double x, y, z; float nx, ny, nz; float red, green, blue). Written
+// whole or not at all; throws std::runtime_error on failure.
+void write_baked_ply(const std::vector<Eigen::Vector3d>& positions,
+                     const std::vector<Eigen::Vector3d>& normals, const std::vector<Rgb>& Lo,
                      const std::string& path);
 
 }  // namespace sss::cli

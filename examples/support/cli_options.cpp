@@ -87,8 +87,9 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --output F.png            tone-mapped sRGB image (default sss_render.png)
   --linear F.pfm            linear outgoing radiance Lo (eq. 14) per pixel, RGB float,
                             no tone mapping, ambient or specular; background 0
-  --bake F.ply              each point's outgoing radiance towards the camera (float red,
-                            green, blue per vertex, input order, finite points only)
+  --bake F.ply              each point's position (double), normal (float nx, ny, nz) and
+                            outgoing radiance towards the camera (float red, green, blue), in
+                            input order, finite points only
   --stats F.json            time of each step, counts and every setting used
   --material NAME           measured preset (default marble): apple chicken1 chicken2 cream
                             ketchup marble potato skimmilk skin1 skin2 spectralon wholemilk

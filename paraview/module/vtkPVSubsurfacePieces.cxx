@@ -14,28 +14,39 @@ int vtkPVSubsurfacePieces::GetNumberOfPieces()
   return controller ? controller->GetNumberOfProcesses() : 1;
 }
 
-void vtkPVSubsurfacePieces::MinimumOverPieces(double* values, vtkIdType count)
+int vtkPVSubsurfacePieces::GetLocalPiece()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return controller ? controller->GetLocalProcessId() : 0;
+}
+
+namespace
+{
+
+// MIN over the global controller's ranks, in place; returns the bytes this rank sent.
+template <typename T>
+vtkIdType reduce_minimum(T* values, vtkIdType count)
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   if (!controller || controller->GetNumberOfProcesses() < 2 || count < 1)
   {
-    return;
+    return 0;
   }
-  std::vector<double> mine(values, values + count);
+  std::vector<T> mine(values, values + count);
   controller->AllReduce(mine.data(), values, count, vtkCommunicator::MIN_OP);
-  this->BytesReduced += count * static_cast<vtkIdType>(sizeof(double));
+  return count * static_cast<vtkIdType>(sizeof(T));
+}
+
+}
+
+void vtkPVSubsurfacePieces::MinimumOverPieces(double* values, vtkIdType count)
+{
+  this->BytesReduced += reduce_minimum(values, count);
 }
 
 void vtkPVSubsurfacePieces::MinimumOverPieces(float* values, vtkIdType count)
 {
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (!controller || controller->GetNumberOfProcesses() < 2 || count < 1)
-  {
-    return;
-  }
-  std::vector<float> mine(values, values + count);
-  controller->AllReduce(mine.data(), values, count, vtkCommunicator::MIN_OP);
-  this->BytesReduced += count * static_cast<vtkIdType>(sizeof(float));
+  this->BytesReduced += reduce_minimum(values, count);
 }
 
 void vtkPVSubsurfacePieces::PrintSelf(ostream& os, vtkIndent indent)

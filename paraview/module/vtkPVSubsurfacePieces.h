@@ -20,6 +20,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   int GetNumberOfPieces() override;
+  /** This rank's piece (its rank in the global controller). */
+  int GetLocalPiece();
   void MinimumOverPieces(double* values, vtkIdType count) override;
   void MinimumOverPieces(float* values, vtkIdType count) override;
 

@@ -3,6 +3,7 @@
 #include "vtkPVSubsurfacePieces.h"
 #include "vtkSubsurfacePass.h"
 
+#include "vtkLogger.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -36,6 +37,13 @@ void vtkPVTranslucentRenderView::Render(bool interactive, bool skip_rendering)
   if (!skip_rendering)
   {
     this->Subsurface->PrepareFrame(this->GetRenderer());
+    if (auto* pieces = vtkPVSubsurfacePieces::SafeDownCast(this->Subsurface->GetPieces()))
+    {
+      // What this rank put into the reductions for this frame (light maps, on a light move).
+      vtkVLog(vtkLogger::VERBOSITY_1, "rank " << pieces->GetLocalPiece() << ": "
+        << pieces->GetBytesReduced() - this->BytesReducedBefore << " bytes reduced this frame");
+      this->BytesReducedBefore = pieces->GetBytesReduced();
+    }
   }
   this->Superclass::Render(interactive, skip_rendering);
 }

@@ -42,6 +42,7 @@ protected:
 
   vtkNew<vtkSubsurfacePass> Subsurface;
   bool HasRendered = false;
+  vtkIdType BytesReducedBefore = 0;
 
 private:
   vtkPVTranslucentRenderView(const vtkPVTranslucentRenderView&) = delete;

@@ -6,6 +6,8 @@
   test_paraview_plugin.py WORKDIR shadow N              a ball on one rank shadows a floor on
                                                         the others, far beyond the kernel
   test_paraview_plugin.py WORKDIR bad-input MESH.ply    no normals, on 1 and 2 ranks
+  test_paraview_plugin.py WORKDIR example MESH.ply      examples/paraview/translucent_cloud.py
+                                                        on 2 ranks
 
 pvbatch runs through scripts/pvbatch.sh (Xvfb when there is no DISPLAY, Open MPI's mpirun).
 Images are compared in 8-bit sRGB over the pixels where either image shows the object.
@@ -72,7 +74,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     cloud = os.path.join(work, "bunny_normals.ply")
     out = lambda name: os.path.join(work, name)  # noqa: E731
-    if case in ("make-cloud", "bad-input") and not os.path.exists(sys.argv[3]):
+    if case in ("make-cloud", "bad-input", "example") and not os.path.exists(sys.argv[3]):
         print("skipped: %s is absent" % sys.argv[3])
         sys.exit(77)
     if case == "make-cloud":
@@ -132,6 +134,16 @@ def main():
             log = pvbatch(ranks, sys.argv[3], out("bad_%d.png" % ranks), *SCENE)
             assert "has no point normals" in log, log[-2000:]
             print("%d rank(s): refused with the message, and the run ended" % ranks)
+    elif case == "example":
+        # The README's script: the mesh split by Redistribute DataSet over 2 ranks.
+        example = os.path.join(HERE, "..", "..", "examples", "paraview", "translucent_cloud.py")
+        log = run(["bash", PVBATCH, "-np", "2", example, sys.argv[3], out("example.png")])
+        lines = ghost_lines(log)
+        assert len(lines) == 2, "expected a ghost report from each of 2 ranks"
+        image = matplotlib.image.imread(out("example.png"))[..., :3]
+        lit = int((image.max(axis=2) > 0.2).sum())
+        print("%d lit pixels" % lit)
+        assert lit > 20000, lit  # the bunny fills about a sixth of the 800 x 600 image
     else:
         sys.exit("unknown case " + case)
 
