@@ -1,6 +1,7 @@
 """Converts sss_render's --bake PLY (double x y z, float nx ny nz, float red green blue) into a
 .vtp of points with normals and double coordinates, which ParaView reads without rounding
-georeferenced coordinates to floats as its PLY reader does:
+georeferenced coordinates to floats as its PLY reader does, and with a vertex cell per point,
+which Redistribute DataSet needs (it hands out cells; points without one are dropped):
   pvbatch examples/paraview/baked_to_vtp.py BAKED.ply OUT.vtp
 """
 import sys
@@ -8,7 +9,7 @@ import sys
 import numpy
 from paraview.vtk.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 with open(sys.argv[1], "rb") as f:
@@ -24,6 +25,10 @@ cloud = vtkPolyData()
 points = vtkPoints()
 points.SetData(numpy_to_vtk(numpy.ascontiguousarray(vertices["xyz"]), deep=True))
 cloud.SetPoints(points)
+vertices_cells = vtkCellArray()
+vertices_cells.SetData(numpy_to_vtk(numpy.arange(count + 1, dtype=numpy.int64), deep=True),
+                       numpy_to_vtk(numpy.arange(count, dtype=numpy.int64), deep=True))
+cloud.SetVerts(vertices_cells)
 normals = numpy_to_vtk(numpy.ascontiguousarray(vertices["n"]), deep=True)
 normals.SetName("Normals")
 cloud.GetPointData().SetNormals(normals)
