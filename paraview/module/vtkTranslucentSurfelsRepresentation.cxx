@@ -158,14 +158,12 @@ int vtkTranslucentSurfelsRepresentation::RequestData(
   vtkPointSet* input = inputVector[0]->GetNumberOfInformationObjects() == 1
     ? vtkPointSet::GetData(inputVector[0], 0)
     : nullptr;
-  double spacing = 0.0;
   if (input && input->GetNumberOfPoints() > 0)
   {
     if (vtkDataArray* normals = point_normals(input))
     {
       piece->SetPoints(input->GetPoints());
       piece->GetPointData()->SetNormals(normals);
-      spacing = mean_spacing(input);
     }
     else
     {
@@ -179,6 +177,8 @@ int vtkTranslucentSurfelsRepresentation::RequestData(
   double reach = 0.0;
   if (controller && controller->GetNumberOfProcesses() > 1)
   {
+    // The spacing (a k-d tree over the piece) only matters when there are other pieces.
+    const double spacing = piece->GetNumberOfPoints() > 0 ? mean_spacing(piece) : 0.0;
     const double kernel_mm = this->Material->GetKernelReachMillimetres();
     reach = kernel_mm / this->Material->GetMillimetresPerUnit() + kNearFieldSpacings * spacing;
   }
