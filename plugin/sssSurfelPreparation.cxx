@@ -2,12 +2,14 @@
 
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkFloatArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -166,6 +168,41 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
     }
   }
   return prepared;
+}
+
+bool radiance_in_surfel_order(
+  const PreparedSurfels& surfels, vtkFloatArray* given, std::vector<Rgb>& B)
+{
+  if (!given || given->GetNumberOfComponents() != 3 ||
+    given->GetNumberOfTuples() != static_cast<vtkIdType>(surfels.report.input))
+  {
+    return false;
+  }
+  B.resize(surfels.cloud.size());
+  for (std::size_t k = 0; k < B.size(); ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      B[k][c] = given->GetValue(static_cast<vtkIdType>(3 * surfels.cloud.input_index[k] + c));
+    }
+  }
+  return true;
+}
+
+void radiance_in_input_order(
+  const PreparedSurfels& surfels, const std::vector<Rgb>& values, vtkFloatArray* B)
+{
+  B->SetNumberOfComponents(3);
+  B->SetNumberOfTuples(static_cast<vtkIdType>(surfels.report.input));
+  B->Fill(std::numeric_limits<float>::quiet_NaN());
+  for (std::size_t k = 0; k < values.size() && k < surfels.cloud.input_index.size(); ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      B->SetValue(static_cast<vtkIdType>(3 * surfels.cloud.input_index[k] + c),
+        static_cast<float>(values[k][c]));
+    }
+  }
 }
 
 }

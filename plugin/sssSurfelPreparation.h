@@ -6,6 +6,7 @@
 #ifndef sssSurfelPreparation_h
 #define sssSurfelPreparation_h
 
+#include "material.h"
 #include "splat_coverage.h"
 #include "surfel_cloud.h"
 
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+class vtkFloatArray;
 class vtkPolyData;
 class vtkUnsignedCharArray;
 
@@ -50,6 +52,15 @@ struct RadiusChoice
 // colours (RGBA per input point) may be null: then every point gets `fallback`.
 PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
   vtkUnsignedCharArray* colours, const std::array<std::uint8_t, 4>& fallback);
+
+// B given per input point (3 components, input order) in the kept surfels' order; false when
+// `given` does not hold 3 components for every input point.
+bool radiance_in_surfel_order(
+  const PreparedSurfels& surfels, vtkFloatArray* given, std::vector<Rgb>& B);
+
+// B per kept surfel into `B` in input order, 3 components; points not kept are NaN.
+void radiance_in_input_order(
+  const PreparedSurfels& surfels, const std::vector<Rgb>& values, vtkFloatArray* B);
 
 }
 

@@ -1,16 +1,14 @@
 #include "vtkSubsurfacePass.h"
 
-#include "sssCoreMaterial.h"
 #include "sssGpuHelpers.h"
 #include "sssSceneLights.h"
-#include "sssTranslucentActorState.h"
+#include "sssTranslucentActors.h"
 #include "sss_composite_fs.h"
 #include "sss_dipole.h"
 #include "sss_subsurface_view_dec.h"
 #include "sss_subsurface_view_impl.h"
 #include "vtkSubsurfacePieces.h"
 #include "vtkSurfelMapper.h"
-#include "vtkTranslucentMaterial.h"
 
 #include "quality_settings.h"
 #include "stopwatch.h"
@@ -19,12 +17,10 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
@@ -35,9 +31,6 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
-#include <map>
 #include <set>
 #include <vector>
 
@@ -45,14 +38,12 @@ vtkStandardNewMacro(vtkSubsurfacePass);
 
 struct vtkSubsurfacePass::Internals
 {
-  std::map<vtkActor*, std::unique_ptr<sss::TranslucentActorState>> States;
-  std::set<vtkActor*> Ready;  // translucent actors whose steps 1-2 are valid this frame
+  sss::TranslucentActors Actors;
   vtkNew<vtkOpenGLFramebufferObject> FrameBuffer;
   vtkSmartPointer<vtkTextureObject> Colour, Depth;
   std::unique_ptr<vtkOpenGLQuadHelper> Composite;
   vtkNew<vtkFloatArray> Linear;
   std::set<std::string> Reported;
-  std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> Precomputed;
   std::vector<sss::GpuLight> Lights;  // the renderer's, this frame, world frame
   vtkSmartPointer<vtkSubsurfacePieces> Pieces;
   bool Prepared = false;  // PrepareFrame ran steps 1-2; the next Render only draws
@@ -133,7 +124,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
   else if (this->Impl->Pieces && this->Impl->Pieces->GetNumberOfPieces() > 1)
   {
     // Collective steps cannot run here (see PrepareFrame): translucent actors draw plain.
-    this->Impl->Ready.clear();
+    this->Impl->Actors.clear_ready();
   }
   else
   {
@@ -148,7 +139,7 @@ void vtkSubsurfacePass::Render(const vtkRenderState* s)
     return;
   }
   this->RenderScene(s, window, width, height);
-  if (this->Composite(window, width, height, x0, y0) && !this->Impl->Ready.empty())
+  if (this->Composite(window, width, height, x0, y0) && !this->Impl->Actors.ready().empty())
   {
     ++this->ViewRuns;
     if (this->MeasureStepTimes)
@@ -212,115 +203,11 @@ void vtkSubsurfacePass::GatherLights(vtkRenderer* ren)
 void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
 {
   Internals& impl = *this->Impl;
-  const std::vector<sss::GpuLight>& lights = impl.Lights;
-  const sss::QualitySettings settings = SettingsOf(this);
-
-  // Steps 1-2 for each translucent actor, where their inputs changed.
-  impl.Ready.clear();
-  std::set<vtkActor*> seen;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    vtkTranslucentMaterial* material = vtkTranslucentMaterial::GetFrom(actor);
-    if (!actor || !material || !actor->GetVisibility())
-    {
-      continue;
-    }
-    auto* mapper = vtkSurfelMapper::SafeDownCast(actor->GetMapper());
-    if (!mapper)
-    {
-      impl.ReportOnce(this,
-        "an actor carries a translucent material but its mapper is not a vtkSurfelMapper; it "
-        "draws as before",
-        false);
-      continue;
-    }
-    const std::string invalid = material->Validate();
-    if (!invalid.empty())
-    {
-      impl.ReportOnce(this, "translucent material: " + invalid, true);
-      continue;
-    }
-    const sss::PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
-    if (!surfels.error.empty())
-    {
-      // The mapper reports it and draws nothing; the other pieces' step 1 still needs this one.
-      sss::TranslucentActorState::take_part_without_surfels(
-        impl.Pieces, sss::lights_in_model_frame(lights, actor->GetMatrix()), settings);
-      continue;
-    }
-    if (lights.empty())
-    {
-      impl.ReportOnce(this,
-        "the renderer has no switched-on light: translucent actors receive no light and are "
-        "black",
-        false);
-    }
-    seen.insert(actor);
-    const std::vector<sss::GpuLight> local = sss::lights_in_model_frame(lights, actor->GetMatrix());
-    sss::Material core = sss::core_material(*material);
-    core.mm_per_unit *= sss::model_scale(actor->GetMatrix());
-    auto& state = impl.States[actor];
-    if (!state)
-    {
-      state = std::make_unique<sss::TranslucentActorState>();
-    }
-    sss::StepReport report;
-    std::string error;
-    auto precomputed = impl.Precomputed.find(actor);
-    if (precomputed != impl.Precomputed.end())
-    {
-      std::vector<sss::Rgb> B(surfels.cloud.size());
-      vtkFloatArray* given = precomputed->second;
-      const bool fits = given->GetNumberOfComponents() == 3 &&
-        given->GetNumberOfTuples() == static_cast<vtkIdType>(surfels.report.input);
-      for (std::size_t k = 0; fits && k < B.size(); ++k)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          B[k][c] = given->GetValue(static_cast<vtkIdType>(3 * surfels.cloud.input_index[k] + c));
-        }
-      }
-      if (!fits)
-      {
-        impl.ReportOnce(this, "precomputed radiance needs 3 components per input point", true);
-        continue;
-      }
-      if (!state->show_radiance(window, surfels, core, B, error))
-      {
-        impl.ReportOnce(this, "precomputed radiance: " + error, true);
-        continue;
-      }
-      impl.Ready.insert(actor);
-      continue;
-    }
-    if (!state->update(window, surfels, mapper->GetSurfelsTime(), core,
-          material->GetColoursAsAlbedo(), local, settings, this->MeasureStepTimes, impl.Pieces,
-          report, error))
-    {
-      impl.ReportOnce(this, "subsurface scattering is off for an actor: " + error, true);
-      continue;
-    }
-    impl.Ready.insert(actor);
-    for (const std::string& note : report.notes)
-    {
-      impl.ReportOnce(this, note, false);
-    }
-    this->Record(report);
-  }
-  for (auto it2 = impl.States.begin(); it2 != impl.States.end();)
-  {
-    if (seen.count(it2->first) == 0)
-    {
-      it2->second->release(window);
-      it2 = impl.States.erase(it2);
-    }
-    else
-    {
-      ++it2;
-    }
-  }
-  this->LastTranslucentActors = static_cast<int>(impl.Ready.size());
+  impl.Actors.update(s, window, impl.Lights, SettingsOf(this), this->MeasureStepTimes,
+    impl.Pieces,
+    [this](const std::string& message, bool error) { this->Impl->ReportOnce(this, message, error); },
+    [this](const sss::StepReport& report) { this->Record(report); });
+  this->LastTranslucentActors = static_cast<int>(impl.Actors.ready().size());
 }
 
 void vtkSubsurfacePass::Record(const sss::StepReport& report)
@@ -375,7 +262,7 @@ void vtkSubsurfacePass::RenderScene(
     impl.Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
     impl.Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
   }
-  for (vtkActor* actor : impl.Ready)
+  for (vtkActor* actor : impl.Actors.ready())
   {
     vtkOpenGLRenderPass::RenderPasses()->Append(actor->GetPropertyKeys(), this);
   }
@@ -397,10 +284,10 @@ void vtkSubsurfacePass::RenderScene(
     this->DelegatePass->Render(&inner);
     this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   }
-  for (vtkActor* actor : impl.Ready)
+  for (vtkActor* actor : impl.Actors.ready())
   {
     vtkOpenGLRenderPass::RenderPasses()->Remove(actor->GetPropertyKeys(), this);
-    impl.States[actor]->surfel_radiance()->Deactivate();
+    impl.Actors.state(actor)->surfel_radiance()->Deactivate();
   }
   if (this->CaptureLinearImage)
   {
@@ -459,7 +346,7 @@ bool vtkSubsurfacePass::PreReplaceShaderValues(std::string& vertexShader, std::s
   std::string&, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
-  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Ready.count(actor))
+  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Actors.is_ready(actor))
   {
     return true;
   }
@@ -475,11 +362,11 @@ bool vtkSubsurfacePass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
-  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Ready.count(actor))
+  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Actors.is_ready(actor))
   {
     return true;
   }
-  sss::TranslucentActorState& state = *this->Impl->States[actor];
+  sss::TranslucentActorState& state = *this->Impl->Actors.state(actor);
   vtkTextureObject* radiance = state.surfel_radiance();
   radiance->Activate();
   program->SetUniformi("surfelRadiance", radiance->GetTextureUnit());
@@ -499,14 +386,7 @@ void vtkSubsurfacePass::SetPrecomputedRadiance(vtkActor* actor, vtkFloatArray* B
   {
     return;
   }
-  if (B)
-  {
-    this->Impl->Precomputed[actor] = B;
-  }
-  else
-  {
-    this->Impl->Precomputed.erase(actor);
-  }
+  this->Impl->Actors.set_precomputed(actor, B);
   this->Modified();
 }
 
@@ -540,42 +420,22 @@ double vtkSubsurfacePass::GetLinearImageQuantile(double q)
 
 bool vtkSubsurfacePass::GetSurfelRadiance(vtkActor* actor, vtkFloatArray* B)
 {
-  auto found = this->Impl->States.find(actor);
+  sss::TranslucentActorState* state = this->Impl->Actors.state(actor);
   auto* mapper = actor ? vtkSurfelMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-  if (found == this->Impl->States.end() || !mapper || !B)
-  {
-    return false;
-  }
   auto* window = this->Impl->FrameBuffer->GetContext();
   std::vector<sss::Rgb> values;
-  if (!window || !found->second->read_surfel_radiance(window, values))
+  if (!state || !mapper || !B || !window || !state->read_surfel_radiance(window, values))
   {
     return false;
   }
-  const sss::PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
-  B->SetNumberOfComponents(3);
-  B->SetNumberOfTuples(static_cast<vtkIdType>(surfels.report.input));
-  B->Fill(std::numeric_limits<float>::quiet_NaN());
-  for (std::size_t k = 0; k < values.size() && k < surfels.cloud.input_index.size(); ++k)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      B->SetValue(static_cast<vtkIdType>(3 * surfels.cloud.input_index[k] + c),
-        static_cast<float>(values[k][c]));
-    }
-  }
+  sss::radiance_in_input_order(mapper->UpdateSurfels(actor), values, B);
   return true;
 }
 
 void vtkSubsurfacePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
-  for (auto& entry : impl.States)
-  {
-    entry.second->release(w);
-  }
-  impl.States.clear();
-  impl.Ready.clear();
+  impl.Actors.release(w);
   impl.FrameBuffer->ReleaseGraphicsResources(w);
   if (impl.Colour)
   {

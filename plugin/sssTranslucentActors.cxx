@@ -1,0 +1,149 @@
+#include "sssTranslucentActors.h"
+
+#include "sssCoreMaterial.h"
+#include "sssSceneLights.h"
+#include "vtkSurfelMapper.h"
+#include "vtkTranslucentMaterial.h"
+
+#include "vtkActor.h"
+#include "vtkFloatArray.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderState.h"
+
+namespace sss
+{
+
+void TranslucentActors::update(const vtkRenderState* s, vtkOpenGLRenderWindow* window,
+  const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
+  vtkSubsurfacePieces* pieces, const Say& say, const Record& record)
+{
+  ready_.clear();
+  std::set<vtkActor*> seen;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    if (!actor || !actor->GetVisibility() || !vtkTranslucentMaterial::GetFrom(actor))
+    {
+      continue;
+    }
+    if (this->update_actor(actor, window, lights, settings, finish, pieces, say, record, seen))
+    {
+      ready_.insert(actor);
+    }
+  }
+  for (auto it = states_.begin(); it != states_.end();)
+  {
+    if (seen.count(it->first) == 0)
+    {
+      it->second->release(window);
+      it = states_.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+}
+
+bool TranslucentActors::update_actor(vtkActor* actor, vtkOpenGLRenderWindow* window,
+  const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
+  vtkSubsurfacePieces* pieces, const Say& say, const Record& record, std::set<vtkActor*>& seen)
+{
+  vtkTranslucentMaterial* material = vtkTranslucentMaterial::GetFrom(actor);
+  auto* mapper = vtkSurfelMapper::SafeDownCast(actor->GetMapper());
+  if (!mapper)
+  {
+    say("an actor carries a translucent material but its mapper is not a vtkSurfelMapper; it "
+        "draws as before",
+      false);
+    return false;
+  }
+  const std::string invalid = material->Validate();
+  if (!invalid.empty())
+  {
+    say("translucent material: " + invalid, true);
+    return false;
+  }
+  const PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
+  const std::vector<GpuLight> local = lights_in_model_frame(lights, actor->GetMatrix());
+  if (!surfels.error.empty())
+  {
+    // The mapper reports it and draws nothing; the other pieces' step 1 still needs this one.
+    TranslucentActorState::take_part_without_surfels(pieces, local, settings);
+    return false;
+  }
+  if (lights.empty())
+  {
+    say("the renderer has no switched-on light: translucent actors receive no light and are "
+        "black",
+      false);
+  }
+  seen.insert(actor);
+  Material core = core_material(*material);
+  core.mm_per_unit *= model_scale(actor->GetMatrix());
+  auto& state = states_[actor];
+  if (!state)
+  {
+    state = std::make_unique<TranslucentActorState>();
+  }
+  std::string error;
+  auto precomputed = precomputed_.find(actor);
+  if (precomputed != precomputed_.end())
+  {
+    std::vector<Rgb> B;
+    if (!radiance_in_surfel_order(surfels, precomputed->second, B))
+    {
+      say("precomputed radiance needs 3 components per input point", true);
+      return false;
+    }
+    if (!state->show_radiance(window, surfels, core, B, error))
+    {
+      say("precomputed radiance: " + error, true);
+      return false;
+    }
+    return true;
+  }
+  StepReport report;
+  if (!state->update(window, surfels, mapper->GetSurfelsTime(), core,
+        material->GetColoursAsAlbedo(), local, settings, finish, pieces, report, error))
+  {
+    say("subsurface scattering is off for an actor: " + error, true);
+    return false;
+  }
+  for (const std::string& note : report.notes)
+  {
+    say(note, false);
+  }
+  record(report);
+  return true;
+}
+
+TranslucentActorState* TranslucentActors::state(vtkActor* actor) const
+{
+  auto found = states_.find(actor);
+  return found == states_.end() ? nullptr : found->second.get();
+}
+
+void TranslucentActors::set_precomputed(vtkActor* actor, vtkFloatArray* B)
+{
+  if (B)
+  {
+    precomputed_[actor] = B;
+  }
+  else
+  {
+    precomputed_.erase(actor);
+  }
+}
+
+void TranslucentActors::release(vtkWindow* window)
+{
+  for (auto& entry : states_)
+  {
+    entry.second->release(window);
+  }
+  states_.clear();
+  ready_.clear();
+}
+
+}

@@ -1,0 +1,73 @@
+// The translucent actors of a frame in a vtkSubsurfacePass: each visible actor that carries a
+// vtkTranslucentMaterial and draws with a vtkSurfelMapper gets its steps 1-2 brought up to
+// date (sssTranslucentActorState) or the radiance given for it shown; the actors ready for the
+// view are kept, and the states of actors no longer drawn are released.
+#ifndef sssTranslucentActors_h
+#define sssTranslucentActors_h
+
+#include "quality_settings.h"
+#include "sssLightMaps.h"
+#include "sssTranslucentActorState.h"
+
+#include "vtkSmartPointer.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+class vtkActor;
+class vtkFloatArray;
+class vtkOpenGLRenderWindow;
+class vtkRenderState;
+class vtkSubsurfacePieces;
+class vtkWindow;
+
+namespace sss
+{
+
+class TranslucentActors
+{
+public:
+  // A warning (error false) or an error for the pass to report.
+  using Say = std::function<void(const std::string& message, bool error)>;
+  // The report of an actor whose steps ran.
+  using Record = std::function<void(const StepReport& report)>;
+
+  // Steps 1-2 of every translucent actor among the state's props, where their inputs changed,
+  // with the world-frame `lights`. Collective with `pieces` (TranslucentActorState::update).
+  void update(const vtkRenderState* s, vtkOpenGLRenderWindow* window,
+    const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
+    vtkSubsurfacePieces* pieces, const Say& say, const Record& record);
+
+  // The actors whose B is valid this frame; none after clear_ready.
+  const std::set<vtkActor*>& ready() const { return ready_; }
+  bool is_ready(vtkActor* actor) const { return ready_.count(actor) != 0; }
+  void clear_ready() { ready_.clear(); }
+
+  // The actor's state, or null when it has none.
+  TranslucentActorState* state(vtkActor* actor) const;
+
+  // B per input point to show for `actor` instead of its steps 1-2; null goes back to them.
+  void set_precomputed(vtkActor* actor, vtkFloatArray* B);
+
+  void release(vtkWindow* window);
+
+private:
+  // Brings one actor up to date; false when it is not ready. Adds it to `seen` once it has
+  // surfels and a valid material (the states of the others are released).
+  bool update_actor(vtkActor* actor, vtkOpenGLRenderWindow* window,
+    const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
+    vtkSubsurfacePieces* pieces, const Say& say, const Record& record,
+    std::set<vtkActor*>& seen);
+
+  std::map<vtkActor*, std::unique_ptr<TranslucentActorState>> states_;
+  std::set<vtkActor*> ready_;
+  std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> precomputed_;
+};
+
+}
+
+#endif
