@@ -9,20 +9,23 @@ uniform vec3 eta;         // relative index of refraction
 
 const float PI = 3.14159265358979;
 
-// Eq. 3 for a source at p with normal n and a receiver at x; distances are clamped at their
-// planar minima (d_r >= z_r, d_v >= z_v), as in the CPU reference.
+// One channel of eq. 3 for a source at p with normal n and a receiver at x; distances are
+// clamped at their planar minima (d_r >= z_r, d_v >= z_v), as in the CPU reference.
+float channelRd(vec3 p, vec3 n, vec3 x, float zr, float zv, float s, float factor)
+{
+  float dR = max(length(p - zr * n - x), zr);
+  float dV = max(length(p + zv * n - x), zv);
+  return factor *
+    (zr * (1.0 + s * dR) * exp(-s * dR) / (dR * dR * dR) +
+      zv * (1.0 + s * dV) * exp(-s * dV) / (dV * dV * dV));
+}
+
+// Eq. 3 in the three channels, spelled out rather than looped (see secondOrderHolds).
 vec3 dipoleRd(vec3 p, vec3 n, vec3 x)
 {
-  vec3 rd;
-  for (int c = 0; c < 3; ++c)
-  {
-    float dR = max(length(p - zR[c] * n - x), zR[c]);
-    float dV = max(length(p + zV[c] * n - x), zV[c]);
-    float real = zR[c] * (1.0 + sTr[c] * dR) * exp(-sTr[c] * dR) / (dR * dR * dR);
-    float virt = zV[c] * (1.0 + sTr[c] * dV) * exp(-sTr[c] * dV) / (dV * dV * dV);
-    rd[c] = rdFactor[c] * (real + virt);
-  }
-  return rd;
+  return vec3(channelRd(p, n, x, zR.r, zV.r, sTr.r, rdFactor.r),
+    channelRd(p, n, x, zR.g, zV.g, sTr.g, rdFactor.g),
+    channelRd(p, n, x, zR.b, zV.b, sTr.b, rdFactor.b));
 }
 
 // One pole's term of eq. 3 (z (1 + s d) e^(-s d) / d^3) at the pole's distance from x,

@@ -5,7 +5,9 @@
 // its spread (twice the RMS distance of its points from their mean) is below openingAngle
 // times its distance from x, its radius spans at most maxGroupDiffusionLengths of every
 // channel whose kernel still matters there, and x lies beyond the clamp of every pole by the
-// poles' spread (secondOrderHolds). The GPU form of the CPU reference's source tree
+// poles' spread (secondOrderHolds); a cell wider than a quarter of its distance from x (where
+// the spacing is coarse for the near-field table's reach, as in the far rows of a Kinect scan)
+// by a ring rule over its disc (cellRd). The GPU form of the CPU reference's source tree
 // (core/source_tree.h). Needs dipole.glsl.
 
 uniform sampler2D sourcePoint;        // xyz: power-weighted mean point, w: summed power
@@ -22,12 +24,45 @@ uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral
 uniform float farFrom;        // mm
 
+const int cellRulePieces = 64;  // cellRd's pieces are at least a 64th of the disc's area
+const int wideCellsPerWalk = 16;  // most cells a walk sums by cellRd; the rest by expansion
+
+// Eq. 3 over a cell's disc (centre p, unit normal n, radius r) at distance d from x by
+// equal-area rings about a piece wide (max(z_r / 2, d / 4), and no finer than the disc's area
+// over cellRulePieces), each with points a piece apart at even angles: a rule whose first
+// moment vanishes and whose second is the disc's (at most about 100 points), as the CPU
+// reference sums a near source (core/source_tree.cpp add_sample). For the cells near x whose
+// disc is too wide for the second-order expansion.
+vec3 cellRd(vec3 p, vec3 n, float r, vec3 x, float d)
+{
+  float piece = max(max(0.5 * min(zR.r, min(zR.g, zR.b)), 0.25 * d),
+    r * sqrt(PI / float(cellRulePieces)));
+  vec3 helper = abs(n.x) < 0.7 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 u = normalize(cross(n, helper));
+  vec3 v = cross(n, u);
+  int rings = max(1, int(ceil(r / piece)));
+  vec3 sum = vec3(0.0);
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    float rho = r * sqrt((float(ring) + 0.5) / float(rings));
+    int m = max(3, int(ceil(6.283185307 * rho / piece)));
+    float share = 1.0 / (float(rings) * float(m));
+    for (int j = 0; j < m; ++j)
+    {
+      float angle = 6.283185307 * (float(j) + 0.5 * float(ring % 2)) / float(m);
+      sum += share * dipoleRd(p + rho * (cos(angle) * u + sin(angle) * v), n, x);
+    }
+  }
+  return sum;
+}
+
 // The part of the far field at x from the cells under one node `root` (xy: texel in its
 // level, z: level) of light `light`'s pyramid. Step 2 sums it over the nodes of a level low
 // enough that no walk visits more than 21,845 nodes: llvmpipe ends a shader invocation's
 // loops after 65,535 iterations in all, which a walk of a whole large pyramid can exceed. A
 // node costs one iteration of the walk and, when opened, four of the loop over its children:
-// at most 21,845 + 4 x 5,461 = 43,689. The loops over the three channels that a node would
+// at most 21,845 + 4 x 5,461 = 43,689; the wide cells' rings add at most 16 x (5 rings +
+// about 100 points), under 1,700. The loops over the three channels that a node would
 // add are spelled out instead (dipole.glsl).
 vec3 farFieldB(vec3 x, int light, ivec3 root)
 {
@@ -36,6 +71,10 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
   int base = light * SSS_MAX_LEVELS;
   int depth = 0;
   stack[depth++] = root;
+  // Cells wider than a quarter of their distance from x, summed by cellRd after the walk so
+  // that its rings do not run inside the walk's loop.
+  ivec2 wideCell[wideCellsPerWalk];
+  int wideCells = 0;
   while (depth > 0)
   {
     ivec3 node = stack[--depth];
@@ -73,6 +112,11 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
     float spread = 2.0 * sqrt(max(group.traces.x, 0.0));
     bool smallEnough = spread < openingAngle * d &&
       size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x);
+    if (level == 0 && size > 0.25 * d && wideCells < wideCellsPerWalk)
+    {
+      wideCell[wideCells++] = texel;
+      continue;
+    }
     if (level == 0 || (smallEnough && !straddles) || depth > 60)
     {
       vec3 power = texelFetch(sourcePower, texel, 0).rgb;
@@ -88,6 +132,13 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
         stack[depth++] = ivec3(child, level - 1);
       }
     }
+  }
+  for (int k = 0; k < wideCells; ++k)
+  {
+    vec4 point = texelFetch(sourcePoint, wideCell[k], 0);
+    vec4 normal = texelFetch(sourceNormal, wideCell[k], 0);
+    sum += texelFetch(sourcePower, wideCell[k], 0).rgb *
+      cellRd(point.xyz, normalize(normal.xyz), normal.w, x, distance(x, point.xyz));
   }
   return sum / PI;
 }
