@@ -92,6 +92,11 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
     {
       continue;
     }
+    if (level == 0 && size > 0.25 * d && wideCells < wideCellsPerWalk)
+    {
+      wideCell[wideCells++] = texel;
+      continue;
+    }
     bool straddles = d - size < farFrom;  // holds cells nearer than farFrom: open it
     // The fastest decay among channels not yet below e^-16 (no loop: see dipole.glsl).
     vec3 significant = step(sTr * (d - size), vec3(16.0)) * sTr;
@@ -112,11 +117,6 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
     float spread = 2.0 * sqrt(max(group.traces.x, 0.0));
     bool smallEnough = spread < openingAngle * d &&
       size * sTrSignificant < maxGroupDiffusionLengths && secondOrderHolds(group, x);
-    if (level == 0 && size > 0.25 * d && wideCells < wideCellsPerWalk)
-    {
-      wideCell[wideCells++] = texel;
-      continue;
-    }
     if (level == 0 || (smallEnough && !straddles) || depth > 60)
     {
       vec3 power = texelFetch(sourcePower, texel, 0).rgb;
