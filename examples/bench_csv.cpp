@@ -7,7 +7,8 @@ namespace sss::bench {
 const char* const kColumns =
     "cloud,points,material,strategy,map_size,opening_angle,cell_samples,is_paper,is_default,"
     "bake_s,light_s,frame_static_s,frame_moving_s,plain_points_s,near_field_mib,virtual_points,"
-    "lit_cells,err_mean,err_p99,err_max,err8_mean,err8_max,peak_rss_mb,kind";
+    "lit_cells,err_mean,err_p99,err_max,err8_mean,err8_max,peak_rss_mb,kind,map_s,cells_s,"
+    "pyramid_s,near_s,far_s,hand_over_s";
 
 namespace {
 std::string cell(double v) {
@@ -26,7 +27,9 @@ void write_row(std::ostream& out, const Row& r) {
       << cell(r.plain_points_s) << ',' << cell(r.near_field_mib) << ','
       << cell(r.virtual_points) << ',' << cell(r.lit_cells) << ',' << cell(r.err_mean) << ','
       << cell(r.err_p99) << ',' << cell(r.err_max) << ',' << cell(r.err8_mean) << ','
-      << cell(r.err8_max) << ',' << cell(r.peak_rss_mb) << ',' << r.kind << '\n';
+      << cell(r.err8_max) << ',' << cell(r.peak_rss_mb) << ',' << r.kind << ','
+      << cell(r.map_s) << ',' << cell(r.cells_s) << ',' << cell(r.pyramid_s) << ','
+      << cell(r.near_s) << ',' << cell(r.far_s) << ',' << cell(r.hand_over_s) << '\n';
   out.flush();
 }
 

@@ -17,6 +17,10 @@ struct Row {
   bool is_paper = false, is_default = false;
   double bake_s = NAN, light_s = NAN, frame_static_s = NAN, frame_moving_s = NAN,
          plain_points_s = NAN;
+  // light_s by step (near-far): light map, cells' light, upward pass, near field, far field,
+  // hand-over of B to the view.
+  double map_s = NAN, cells_s = NAN, pyramid_s = NAN, near_s = NAN, far_s = NAN,
+         hand_over_s = NAN;
   double near_field_mib = NAN, virtual_points = NAN, lit_cells = NAN;
   double err_mean = NAN, err_p99 = NAN, err_max = NAN, err8_mean = NAN, err8_max = NAN;
   double peak_rss_mb = NAN;

@@ -323,6 +323,12 @@ void measure(TranslucentScene& scene, const Setting& s, int frames, Row& row) {
     row.cell_samples = pass->GetCellSamples();
     row.near_field_mib = 16.0 * static_cast<double>(pass->GetLastNearFieldEntries()) / 1048576.0;
     row.lit_cells = static_cast<double>(pass->GetLastLitCells());
+    row.map_s = pass->GetLastIlluminationSeconds();
+    row.cells_s = pass->GetLastCellSeconds();
+    row.pyramid_s = pass->GetLastPyramidSeconds();
+    row.near_s = pass->GetLastNearFieldSeconds();
+    row.far_s = pass->GetLastFarFieldSeconds();
+    row.hand_over_s = pass->GetLastHandOverSeconds();
   } else {
     row.virtual_points = static_cast<double>(pass->GetLastVirtualPoints());
   }
@@ -332,15 +338,26 @@ void measure(TranslucentScene& scene, const Setting& s, int frames, Row& row) {
   row.frame_moving_s = sss::cli::time_light_moving(scene, row.light_s > 2.0 ? 1 : frames);
 }
 
+// "; light steps: map 0.1 s, ..." for a near-far row, "" for others.
+std::string profile(const Row& r) {
+  if (!std::isfinite(r.far_s)) return "";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "; light steps: map %.3g s, cells %.3g s, pyramid %.3g s, near %.3g s, far "
+                "%.3g s, hand-over %.3g s",
+                r.map_s, r.cells_s, r.pyramid_s, r.near_s, r.far_s, r.hand_over_s);
+  return text;
+}
+
 void print_row(const Row& r) {
   std::fprintf(stderr,
                "  %-8s map %4d angle %.2g samples %g: bake %.3f s, light steps %.3f s, static "
                "%.4f s (%.2fx), moving %.3f s (%.1fx), near field %.1f MiB, error mean %.3f %% "
-               "p99 %.2f %% max %.1f %%\n",
+               "p99 %.2f %% max %.1f %%%s\n",
                r.strategy.c_str(), r.map_size, r.opening_angle, r.cell_samples, r.bake_s,
                r.light_s, r.frame_static_s, r.frame_static_s / r.plain_points_s,
                r.frame_moving_s, r.frame_moving_s / r.plain_points_s, r.near_field_mib,
-               100 * r.err_mean, 100 * r.err_p99, 100 * r.err_max);
+               100 * r.err_mean, 100 * r.err_p99, 100 * r.err_max, profile(r).c_str());
 }
 
 void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {

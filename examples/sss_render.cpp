@@ -133,6 +133,12 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"surfels\": " << pass->GetLastSurfelSeconds()
         << ", \"first_frame\": " << t.first_frame
         << ", \"camera_only_frame\": " << t.camera_frame << "},\n"
+        << "  \"light_move_seconds\": {\"light_map\": " << pass->GetLastIlluminationSeconds()
+        << ", \"cells\": " << pass->GetLastCellSeconds()
+        << ", \"pyramid\": " << pass->GetLastPyramidSeconds()
+        << ", \"near_field\": " << pass->GetLastNearFieldSeconds()
+        << ", \"far_field\": " << pass->GetLastFarFieldSeconds()
+        << ", \"hand_over\": " << pass->GetLastHandOverSeconds() << "},\n"
         << "  \"frames\": {\"count\": " << o.frames
         << ", \"light_static_seconds\": " << t.light_static
         << ", \"light_moving_seconds\": " << t.light_moving
@@ -244,6 +250,8 @@ int run(const Options& o) {
                  timings.light_static / timings.plain_points,
                  timings.light_moving / timings.plain_points);
   }
+  if (o.method == "gpu" && scene.pass->GetSurfelRuns() > 0)
+    std::fprintf(stderr, "last light move: %s\n", scene.pass->GetLastLightMoveProfile().c_str());
   if (!o.stats_json.empty()) write_stats(o, material, cloud, lights, pass, timings, o.stats_json);
   std::fprintf(stderr, "wrote %s (first frame %.3f s, camera-only frame %.3f s)\n",
                o.output_png.c_str(), timings.first_frame, timings.camera_frame);

@@ -6,6 +6,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkRenderWindow.h>
+#include <vtkSubsurfacePass.h>
 
 #include <chrono>
 #include <cmath>
@@ -174,6 +175,7 @@ struct Viewer {
       cloud.autoExpose();
     } else if (key == "h") {
       std::fputs(kUsage, stdout);
+      std::printf("last light move: %s\n", cloud.pass()->GetLastLightMoveProfile().c_str());
       return;
     } else {
       return;

@@ -207,21 +207,19 @@ int LitCells::level_height(int light, int level) const
 }
 
 bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
-  const LightMapAtlas& maps, double disc_radius, int cell_samples, std::size_t& lit,
-  std::string& error)
+  const LightMapAtlas& maps, double disc_radius, int cell_samples, std::string& error)
 {
   const int lights = static_cast<int>(maps.maps.size());
   allocate(window, list.width(), list.height(), std::max(lights, 1));
   static const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs,
     std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table);
   vtkShaderProgram* irradiance = ready_quad(irradiance_quad_, window, irradiance_fs.c_str());
-  vtkShaderProgram* reduce =
-    irradiance ? ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs) : nullptr;
-  if (!irradiance || !reduce)
+  if (!irradiance || !ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs))
   {
     error = "the irradiance or pyramid shader did not compile";
     return false;
   }
+  lights_ = lights;
   vtkOpenGLState* state = window->GetState();
   PointPassState pass_state(state);
   state->PushFramebufferBindings();
@@ -267,8 +265,19 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   list.deactivate();
   maps.surfel->Deactivate();
   fbo_->RemoveColorAttachments(kCellSources + 1);
+  state->PopFramebufferBindings();
+  return true;
+}
 
-  // The coarser levels.
+void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
+{
+  const int lights = lights_;
+  vtkShaderProgram* reduce = reduce_quad_->Program;
+  vtkOpenGLState* state = window->GetState();
+  PointPassState pass_state(state);
+  state->PushFramebufferBindings();
+  fbo_->SetContext(window);
+  fbo_->Bind();
   for (int k = 0; k < kSources; ++k)
   {
     fbo_->AddColorAttachment(k, source_[k]);
@@ -318,7 +327,6 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   }
   fbo_->RemoveColorAttachments(kSources);
   state->PopFramebufferBindings();
-  return true;
 }
 
 void LitCells::activate(vtkShaderProgram* program) const

@@ -38,12 +38,15 @@ public:
 
   // The Fresnel table of the material's eta.
   void bake(vtkOpenGLRenderWindow* window, const Material& material);
-  // E and the source pyramids for the lights of `maps`, from `cell_samples` points per cell
-  // and light (eight times as many where they disagree: an edge crosses the cell);
-  // `disc_radius` (mm) bounds the curvature that lifts a cell's samples. `lit` counts the lit
-  // cells over all lights.
+  // E and the finest level of each light's source pyramid for the lights of `maps`, from
+  // `cell_samples` points per cell and light (eight times as many where they disagree: an
+  // edge crosses the cell); `disc_radius` (mm) bounds the curvature that lifts a cell's
+  // samples.
   bool light(vtkOpenGLRenderWindow* window, const SurfelList& list, const LightMapAtlas& maps,
-    double disc_radius, int cell_samples, std::size_t& lit, std::string& error);
+    double disc_radius, int cell_samples, std::string& error);
+  // The upward pass: the coarser levels of each pyramid from the finest. `lit` counts the
+  // lit cells over all lights.
+  void reduce(vtkOpenGLRenderWindow* window, std::size_t& lit);
 
   // far_field.glsl's and near_field.glsl's textures: the pyramids and E, bound for `program`.
   void activate(vtkShaderProgram* program) const;
@@ -68,6 +71,7 @@ private:
   static constexpr int kCellSources = 5;
   vtkSmartPointer<vtkTextureObject> E_, source_[kSources], fresnel_;
   int atlas_lights_ = 0, atlas_width_ = 0, atlas_height_ = 0;
+  int lights_ = 0;  // of the last light()
   std::vector<std::vector<Rect>> levels_;  // per light: the pyramid's levels
   vtkNew<vtkOpenGLFramebufferObject> fbo_;
   std::unique_ptr<vtkOpenGLQuadHelper> irradiance_quad_, reduce_quad_;

@@ -27,7 +27,11 @@ struct StepReport
 {
   bool bake = false, illumination = false, surfels = false;
   double seconds_bake = 0, seconds_illumination = 0, seconds_surfels = 0;
-  double seconds_cells = 0, seconds_B = 0;  // within seconds_surfels (NEAR_FAR)
+  // Within seconds_surfels (NEAR_FAR), a light move by step: the cells' light, the upward
+  // pass (the source pyramids), the near field's table, the far field, and the hand-over of B
+  // to the view.
+  double seconds_cells = 0, seconds_pyramid = 0, seconds_near = 0, seconds_far = 0,
+         seconds_hand_over = 0;
   std::size_t lit_cells = 0, virtual_point_count = 0, surfel_count = 0, near_entries = 0;
   int map_width = 0, map_height = 0, grid_level = 0;
   double texel_mm = 0, grid_spacing_mm = 0;

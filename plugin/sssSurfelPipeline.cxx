@@ -152,13 +152,15 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& li
   const LightMapAtlas maps = light_maps.atlas();
   Gpu& g = *gpu_;
   Stopwatch clock;
-  if (!g.cells.light(window, g.list, maps, g.radius, g.settings.cell_samples, report.lit_cells,
-        error))
+  if (!g.cells.light(window, g.list, maps, g.radius, g.settings.cell_samples, error))
   {
     return false;
   }
   finish_if(finish);
   report.seconds_cells = clock.lap();
+  g.cells.reduce(window, report.lit_cells);
+  finish_if(finish);
+  report.seconds_pyramid = clock.lap();
 
   // B at every surfel: the near field's table, then the far field's walk.
   static const std::string gather_fs = shader_with_pieces(sss_near_field_fs,
@@ -189,6 +191,8 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& li
   gather->SetUniformi("addNearField", 1);
   gather->SetUniformi("addFarField", 0);
   g.gather_quad->Render();
+  finish_if(finish);
+  report.seconds_near = clock.lap();
   if (g.split.has_far && lights > 0)
   {
     FarFieldSettings far;
@@ -203,8 +207,11 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& li
   g.fbo->RemoveColorAttachments(1);
   state->PopFramebufferBindings();
   finish_if(finish);
-  report.seconds_B = clock.lap();
-  return resolve.from_list(window, points, g.list.texel_buffer(), g.B, error);
+  report.seconds_far = clock.lap();
+  const bool handed = resolve.from_list(window, points, g.list.texel_buffer(), g.B, error);
+  finish_if(finish);
+  report.seconds_hand_over = clock.lap();
+  return handed;
 }
 
 }

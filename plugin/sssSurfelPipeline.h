@@ -48,8 +48,8 @@ public:
     std::string& error) override;
   // Maps of the surfel each texel sees, texels TexelPerRadius of a disc radius.
   LightMapRequest light_map_request(const QualitySettings& settings) const override;
-  // Irradiance, source pyramids and B at every surfel for the given light maps; with `finish`
-  // the report's seconds of the lit cells (irradiance and pyramid) and of B (near and far).
+  // Irradiance, source pyramids and B at every surfel for the given light maps, handed to
+  // the view; with `finish` the report's seconds of each of these steps are exact.
   bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
     bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
     std::string& error) override;

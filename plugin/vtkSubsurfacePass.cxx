@@ -236,10 +236,23 @@ void vtkSubsurfacePass::Record(const sss::StepReport& report)
     ++this->SurfelRuns;
     this->LastSurfelSeconds = report.seconds_surfels;
     this->LastCellSeconds = report.seconds_cells;
-    this->LastRadianceSeconds = report.seconds_B;
+    this->LastPyramidSeconds = report.seconds_pyramid;
+    this->LastNearFieldSeconds = report.seconds_near;
+    this->LastFarFieldSeconds = report.seconds_far;
+    this->LastHandOverSeconds = report.seconds_hand_over;
     this->LastLitCells = static_cast<vtkIdType>(report.lit_cells);
   }
   this->LastSurfels = static_cast<vtkIdType>(report.surfel_count);
+}
+
+std::string vtkSubsurfacePass::GetLastLightMoveProfile() const
+{
+  char line[256];
+  std::snprintf(line, sizeof line,
+    "map %.3g s, cells %.3g s, pyramid %.3g s, near %.3g s, far %.3g s, hand-over %.3g s",
+    this->LastIlluminationSeconds, this->LastCellSeconds, this->LastPyramidSeconds,
+    this->LastNearFieldSeconds, this->LastFarFieldSeconds, this->LastHandOverSeconds);
+  return line;
 }
 
 void vtkSubsurfacePass::RenderScene(
@@ -504,10 +517,10 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeasureStepTimes: " << this->MeasureStepTimes << "\n";
   os << indent << "Runs (bake, illumination, surfels, view): " << this->BakeRuns << " "
      << this->IlluminationRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";
-  os << indent << "Last seconds (bake, illumination, surfels: cells + B, view): "
-     << this->LastBakeSeconds << " " << this->LastIlluminationSeconds << " "
-     << this->LastSurfelSeconds << ": " << this->LastCellSeconds << " + "
-     << this->LastRadianceSeconds << " " << this->LastViewSeconds << "\n";
+  os << indent << "Last seconds (bake, illumination, surfels, view): " << this->LastBakeSeconds
+     << " " << this->LastIlluminationSeconds << " " << this->LastSurfelSeconds << " "
+     << this->LastViewSeconds << "\n";
+  os << indent << "Last light move: " << this->GetLastLightMoveProfile() << "\n";
   os << indent << "Last map: " << this->LastMapWidth << " x " << this->LastMapHeight << ", texel "
      << this->LastTexelMillimetres << " mm\n";
   os << indent << "Last near field: to " << this->LastNearReachMillimetres << " mm, "

@@ -73,14 +73,13 @@ TEST_P(GpuVsReference, MeetsItsBars) {
   }
   const ErrorStats e = compare_radiance(got, expected);
   std::printf("[ gpu vs reference ] %s %s: %zu surfels, %lld lit cells, texel %.3f mm, near "
-              "field to %.2f mm, far field from %.2f mm; %s; GPU %.1f s (bake %.1f s, map %.2f "
-              "s, cells %.2f s, B %.2f s), reference %.1f s\n",
+              "field to %.2f mm, far field from %.2f mm; %s; GPU %.1f s (bake %.1f s; light "
+              "move: %s), reference %.1f s\n",
               c.file, c.material, cloud.size(),
               static_cast<long long>(scene.pass->GetLastLitCells()),
               scene.pass->GetLastTexelMillimetres(), scene.pass->GetLastNearReachMillimetres(),
               scene.pass->GetLastFarFromMillimetres(), e.summary().c_str(), gpu_seconds,
-              scene.pass->GetLastBakeSeconds(), scene.pass->GetLastIlluminationSeconds(),
-              scene.pass->GetLastCellSeconds(), scene.pass->GetLastRadianceSeconds(),
+              scene.pass->GetLastBakeSeconds(), scene.pass->GetLastLightMoveProfile().c_str(),
               reference_seconds);
   EXPECT_LT(e.mean, c.mean_bar);
   EXPECT_LT(e.p99, c.p99_bar);

@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
+#include <utility>
 
 #include "vtkSubsurfacePass.h"
 #include "vtkSurfelMapper.h"
@@ -196,14 +198,21 @@ vtkSubsurfacePass* TranslucentCloud::pass() const { return passes_.front(); }
 
 std::string TranslucentCloud::settingsLine() const {
   vtkSubsurfacePass* p = passes_.front();
-  const double B_seconds = p->GetLastIlluminationSeconds() + p->GetLastSurfelSeconds();
+  const double light_move = p->GetLastIlluminationSeconds() + p->GetLastSurfelSeconds();
+  // The light move's largest step, so that where its time goes shows in one line.
+  const std::pair<double, const char*> steps[] = {
+      {p->GetLastIlluminationSeconds(), "map"}, {p->GetLastCellSeconds(), "cells"},
+      {p->GetLastPyramidSeconds(), "pyramid"}, {p->GetLastNearFieldSeconds(), "near"},
+      {p->GetLastFarFieldSeconds(), "far"}, {p->GetLastHandOverSeconds(), "hand-over"}};
+  const auto largest = *std::max_element(std::begin(steps), std::end(steps));
   const std::string lights = lights_.empty() ? "headlight"
                              : lights_.size() == 1 ? "1 light"
                                                    : std::to_string(lights_.size()) + " lights";
   char line[256];
-  std::snprintf(line, sizeof line, "%s, %g mm/unit, %s, %s, exposure %.3g, B %.2f s",
+  std::snprintf(line, sizeof line,
+                "%s, %g mm/unit, %s, %s, exposure %.3g, light move %.2f s (%s %.2f s)",
                 material_->GetName(), material_->GetMillimetresPerUnit(), qualityName(quality_),
-                lights.c_str(), p->GetExposure(), B_seconds);
+                lights.c_str(), p->GetExposure(), light_move, largest.second, largest.first);
   return line;
 }
 

@@ -83,7 +83,8 @@ class TranslucentCloud {
   vtkActor* actor() const;
   vtkTranslucentMaterial* material() const;
   vtkSubsurfacePass* pass() const;
-  // "marble, 1 mm/unit, quality accurate, 2 lights, exposure 3.1, B 0.41 s": for overlays.
+  // "marble, 1 mm/unit, quality accurate, 2 lights, exposure 3.1, light move 0.41 s (far
+  // 0.30 s)": for overlays; the light move is the last, its largest step in brackets.
   std::string settingsLine() const;
 
  private:
