@@ -11,6 +11,7 @@ namespace sss::bench {
 
 struct Row {
   std::string cloud, material, strategy, kind = "sweep";
+  std::string renderer;  // the OpenGL renderer and context that drew it
   std::size_t points = 0;
   int map_size = 0;
   double opening_angle = NAN, cell_samples = NAN;

@@ -32,6 +32,7 @@
 #include "procedural_shapes.h"
 #include "reference_cache.h"
 #include "render_window.h"
+#include "renderer_info.h"
 #include "splat_coverage.h"
 #include "stopwatch.h"
 #include "translucent_scene.h"
@@ -89,6 +90,8 @@ options (default in brackets)
   --size N             window N x N pixels [512]
   --max-bake-s S       once a setting's bake and light steps exceed S seconds, the scale
                        sweep skips that setting at larger point counts [300]
+  --gpu N              draw on EGL device N [the first graphics card, else Mesa's software
+                       device]; the renderer is printed and in every row of the CSV
   --out DIR            output folder [bench]
   --cache DIR          reference cache folder [$XDG_CACHE_HOME/sss, else ~/.cache/sss]
   --help               this text
@@ -109,6 +112,7 @@ struct Options {
   int frames = 8;
   int size = 512;
   double max_bake_s = 300.0;
+  int gpu = -1;  // EGL device; -1: the first hardware device, else the software one
   fs::path out = "bench";
   fs::path cache;
 };
@@ -217,6 +221,8 @@ Options parse(int argc, char** argv) {
       o.size = static_cast<int>(sss::cli::count(flag, value(), 16384));
     } else if (flag == "--max-bake-s") {
       o.max_bake_s = number(flag, value());
+    } else if (flag == "--gpu") {
+      o.gpu = static_cast<int>(sss::cli::count(flag, value(), 1023));
     } else if (flag == "--out") {
       o.out = value();
     } else if (flag == "--cache") {
@@ -360,11 +366,28 @@ void print_row(const Row& r) {
                100 * r.err_mean, 100 * r.err_p99, 100 * r.err_max, profile(r).c_str());
 }
 
+// An EGL window on the chosen device; the renderer that draws it is printed and goes into
+// every row of the CSV.
+std::string renderer_text;
+vtkSmartPointer<vtkRenderWindow> make_window(const Options& o) {
+  auto window = sss::cli::make_render_window("egl", o.size, o.size, o.gpu);
+  const sss::cli::RendererInfo info = sss::cli::renderer_info(window);
+  renderer_text = info.summary();
+  std::fprintf(stderr, "drawn by %s\n", renderer_text.c_str());
+  if (!info.warning().empty()) std::fprintf(stderr, "%s\n", info.warning().c_str());
+  return window;
+}
+
+void emit(std::ostream& csv, Row& row) {
+  row.renderer = renderer_text;
+  write_row(csv, row);
+}
+
 void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
   std::fprintf(stderr, "%s: %zu surfels\n", cloud.name.c_str(), cloud.surfels.size());
   const std::vector<std::string>& materials = cloud.materials.empty() ? o.materials : cloud.materials;
   const std::vector<sss::Light> lights{{cloud.light, 1.0}};
-  auto window = sss::cli::make_render_window("egl", o.size, o.size);
+  auto window = make_window(o);
   TranslucentScene scene(window, cloud.surfels,
                          sss::Material::preset(materials[0], 1.3, cloud.mm_per_unit), lights);
   scene.aim_camera(cloud.surfels.bounds().center(), cloud.view_dir, cloud.up, false);
@@ -406,7 +429,7 @@ void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
       row.err_mean = e.mean, row.err_p99 = e.p99, row.err_max = e.max;
       row.err8_mean = e.srgb8_mean, row.err8_max = e.srgb8_max;
       print_row(row);
-      write_row(csv, row);
+      emit(csv, row);
     }
   }
 }
@@ -437,7 +460,7 @@ void run_view(const Options& o, TranslucentScene& scene, const Cloud& cloud, dou
     row.peak_rss_mb = peak_rss_mb();
     std::fprintf(stderr, "  view, %s: %.4f s per frame (%.2fx plain VTK points)\n",
                  row.strategy.c_str(), row.frame_static_s, row.frame_static_s / plain);
-    write_row(csv, row);
+    emit(csv, row);
   }
   scene.mapper->SetSplattingToBlended();
   scene.pass->SetPrecomputedRadiance(scene.actor, nullptr);
@@ -469,7 +492,7 @@ void run_scale(const Options& o, std::ostream& csv) {
     }
     sss::assign_splat_radii(cloud.surfels);
     std::fprintf(stderr, "scale: %zu surfels (%.1f s to make)\n", cloud.surfels.size(), clock.lap());
-    auto window = sss::cli::make_render_window("egl", o.size, o.size);
+    auto window = make_window(o);
     TranslucentScene scene(window, cloud.surfels, material, {{kObjectLight, 1.0}});
     scene.aim_camera(cloud.surfels.bounds().center(), kObjectView, kObjectUp, false);
     scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
@@ -492,7 +515,7 @@ void run_scale(const Options& o, std::ostream& csv) {
       measure(scene, s, o.frames, row);
       row.peak_rss_mb = peak_rss_mb();
       print_row(row);
-      write_row(csv, row);
+      emit(csv, row);
       if (row.bake_s + row.light_s > o.max_bake_s) over_budget.push_back(strategy);
     }
   }

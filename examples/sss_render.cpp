@@ -38,6 +38,7 @@
 #include "procedural_shapes.h"
 #include "reference_renderer.h"
 #include "render_window.h"
+#include "renderer_info.h"
 #include "translucent_scene.h"
 #include "stopwatch.h"
 #include "whole_file.h"
@@ -84,11 +85,17 @@ struct Timings {
 };
 
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
-                 const std::vector<sss::Light>& lights,
-                 vtkSubsurfacePass* pass, const Timings& t, const std::string& path) {
+                 const std::vector<sss::Light>& lights, vtkSubsurfacePass* pass,
+                 const sss::cli::RendererInfo& renderer, const Timings& t,
+                 const std::string& path) {
   sss::write_whole_file(path, [&](std::ostream& out) {
     out << "{\n  \"method\": \"" << o.method << "\",\n  \"backend\": \"" << o.backend
-        << "\",\n  \"strategy\": \"" << pass->GetKernelStrategyAsString() << "\",\n"
+        << "\",\n  \"renderer\": {\"gl_vendor\": " << json_string(renderer.gl_vendor)
+        << ", \"gl_renderer\": " << json_string(renderer.gl_renderer)
+        << ", \"gl_version\": " << json_string(renderer.gl_version)
+        << ", \"context\": " << json_string(renderer.context)
+        << ", \"software\": " << (renderer.software ? "true" : "false") << "},\n"
+        << "  \"strategy\": \"" << pass->GetKernelStrategyAsString() << "\",\n"
         << "  \"input\": " << json_string(o.input.empty() ? "procedural torus" : o.input) << ",\n"
         << "  \"material\": {\"name\": \"" << m.name << "\", \"sigma_a_per_mm\": "
         << json_rgb(m.sigma_a) << ", \"sigma_s_prime_per_mm\": " << json_rgb(m.sigma_s_prime)
@@ -167,7 +174,10 @@ int run(const Options& o) {
                cloud.radius, material.name.c_str(), o.method.c_str(), o.backend.c_str());
 
   vtkSmartPointer<vtkRenderWindow> window =
-      sss::cli::make_render_window(o.backend, o.width, o.height);
+      sss::cli::make_render_window(o.backend, o.width, o.height, o.gpu);
+  const sss::cli::RendererInfo renderer = sss::cli::renderer_info(window);
+  std::fprintf(stderr, "drawn by %s\n", renderer.summary().c_str());
+  if (!renderer.warning().empty()) std::fprintf(stderr, "%s\n", renderer.warning().c_str());
   const std::vector<sss::Light> lights = sss::cli::lights_of(o, cloud.bounds().center());
   sss::cli::TranslucentScene scene(window, cloud, material, lights);
   vtkSubsurfacePass* pass = scene.pass;
@@ -252,7 +262,8 @@ int run(const Options& o) {
   }
   if (o.method == "gpu" && scene.pass->GetSurfelRuns() > 0)
     std::fprintf(stderr, "last light move: %s\n", scene.pass->GetLastLightMoveProfile().c_str());
-  if (!o.stats_json.empty()) write_stats(o, material, cloud, lights, pass, timings, o.stats_json);
+  if (!o.stats_json.empty())
+    write_stats(o, material, cloud, lights, pass, renderer, timings, o.stats_json);
   std::fprintf(stderr, "wrote %s (first frame %.3f s, camera-only frame %.3f s)\n",
                o.output_png.c_str(), timings.first_frame, timings.camera_frame);
   return 0;

@@ -19,6 +19,7 @@
 #include "cli_options.h"
 #include "material.h"
 #include "procedural_shapes.h"
+#include "renderer_info.h"
 #include "sssPclTranslucentCloud.h"
 
 namespace {
@@ -175,6 +176,8 @@ struct Viewer {
       cloud.autoExpose();
     } else if (key == "h") {
       std::fputs(kUsage, stdout);
+      std::printf("drawn by %s\n",
+                  sss::cli::renderer_info(pcl_viewer.getRenderWindow()).summary().c_str());
       std::printf("last light move: %s\n", cloud.pass()->GetLastLightMoveProfile().c_str());
       return;
     } else {
@@ -238,6 +241,8 @@ int run(const Options& o) {
 
   std::fprintf(stderr, "first frame (steps 1-2 run now)...\n");
   pcl_viewer.getRenderWindow()->Render();
+  std::fprintf(stderr, "drawn by %s\n",
+               sss::cli::renderer_info(pcl_viewer.getRenderWindow()).summary().c_str());
   cloud->autoExpose();
   const auto status = [&] {
     char fps[64];

@@ -111,8 +111,12 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --method gpu|reference    gpu (default): the real-time method; reference: the CPU
                             evaluation of the same model at full precision (progress on
                             stderr), shown the same way
-  --backend osmesa|egl|x    OpenGL context: OSMesa or EGL surfaceless (no display needed;
-                            default egl) or an X window (needs DISPLAY)
+  --backend osmesa|egl|x    OpenGL context: OSMesa or EGL (no display needed; default egl)
+                            or an X window (needs DISPLAY); --stats names the renderer
+  --gpu N|surfaceless       egl: draw on EGL device N (0, 1, ...), or on Mesa's surfaceless
+                            platform (default: the first graphics card, else Mesa's software
+                            device, else the surfaceless platform; SSS_EGL_DEVICE=N does the
+                            same for scripts)
   --quality NAME            interactive, balanced (default) or accurate: named settings of
                             the flags below, which override it (docs/benchmark/bench.md)
   --strategy NAME           near-far (default): each surfel's cell lit through the light
@@ -236,6 +240,9 @@ Options parse(int argc, char** argv) {
       o.backend = value();
       if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "x")
         throw std::invalid_argument("--backend: '" + o.backend + "' is not osmesa, egl or x");
+    } else if (flag == "--gpu") {
+      const std::string device = value();
+      o.gpu = device == "surfaceless" ? kSurfacelessPlatform : whole(flag, device, 0, 1023);
     } else if (flag == "--quality") {
       o.quality = value();
       try {

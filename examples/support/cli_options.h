@@ -38,6 +38,8 @@ struct Options {
   int width = 512, height = 512;
   std::string method = "gpu";
   std::string backend = "egl";
+  int gpu = -1;  // EGL device; -1: the first hardware device, else the software one;
+                 // kSurfacelessPlatform: Mesa's surfaceless platform
   // The pass's settings: unset ones keep vtkSubsurfacePass's defaults.
   std::optional<std::string> quality, strategy;
   std::optional<int> grid_level, max_map_size, cell_samples;
@@ -52,6 +54,9 @@ struct Options {
   std::size_t memory_cap = 0;  // bytes a load may claim; 0: the loader's default
   bool help = false;
 };
+
+// Options::gpu for Mesa's surfaceless platform instead of an EGL device (--gpu surfaceless).
+constexpr int kSurfacelessPlatform = -2;
 
 // Throws std::invalid_argument with a message naming the flag and what is wrong.
 Options parse(int argc, char** argv);

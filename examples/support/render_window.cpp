@@ -1,5 +1,7 @@
 #include "render_window.h"
 
+#include "cli_options.h"
+
 #include <vtkEGLSurfacelessRenderWindow.h>
 #include <vtkOSMesaRenderWindow.h>
 #include <vtkRenderWindow.h>
@@ -17,14 +19,17 @@ void prepare_backend(const std::string& backend, int argc, char** argv) {
 }
 
 vtkSmartPointer<vtkRenderWindow> make_render_window(const std::string& backend, int width,
-                                                   int height) {
+                                                   int height, int gpu) {
   if (backend == "egl") {
     auto window = vtkSmartPointer<vtkEGLSurfacelessRenderWindow>::New();
+    if (gpu >= 0) window->SetDeviceIndex(gpu);
+    if (gpu == kSurfacelessPlatform) window->UseDevicePlatformOff();
     window->SetSize(width, height);
     if (!window->IsContextValid())
       throw std::runtime_error("--backend egl: " + window->GetLastError());
     return window;
   }
+  if (gpu != -1) throw std::runtime_error("--gpu: only --backend egl chooses a device");
   if (backend == "osmesa") {
     auto window = vtkSmartPointer<vtkOSMesaRenderWindow>::New();
     window->SetSize(width, height);

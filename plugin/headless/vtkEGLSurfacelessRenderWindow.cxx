@@ -14,9 +14,13 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #ifndef EGL_PLATFORM_SURFACELESS_MESA
 #define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
@@ -74,6 +78,113 @@ std::string EGLErrorText()
   return s.str();
 }
 
+// One EGL device as eglQueryDevicesEXT lists it (EGL_EXT_device_enumeration).
+struct DeviceInfo
+{
+  EGLDeviceEXT device = nullptr;
+  bool software = false;  // Mesa marks its CPU renderer with EGL_MESA_device_software
+  std::string file;       // the DRM node (EGL_EXT_device_drm), empty for none
+  std::string name;       // vendor and renderer (EGL_EXT_device_query_name), when offered
+};
+
+std::vector<DeviceInfo> QueryDevices(const char* clientExt)
+{
+  std::vector<DeviceInfo> found;
+  if (!HasToken(clientExt, "EGL_EXT_device_enumeration") &&
+    !HasToken(clientExt, "EGL_EXT_device_base"))
+  {
+    return found;
+  }
+  auto queryDevices =
+    reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  auto queryString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+    eglGetProcAddress("eglQueryDeviceStringEXT"));
+  EGLint count = 0;
+  if (!queryDevices || !queryString || !queryDevices(0, nullptr, &count) || count <= 0)
+  {
+    eglGetError();
+    return found;
+  }
+  std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
+  if (!queryDevices(count, devices.data(), &count))
+  {
+    eglGetError();
+    return found;
+  }
+  devices.resize(static_cast<std::size_t>(std::max<EGLint>(count, 0)));
+  for (EGLDeviceEXT device : devices)
+  {
+    DeviceInfo info;
+    info.device = device;
+    const char* ext = queryString(device, EGL_EXTENSIONS);
+    info.software = HasToken(ext, "EGL_MESA_device_software");
+    if (HasToken(ext, "EGL_EXT_device_drm"))
+    {
+      const char* file = queryString(device, EGL_DRM_DEVICE_FILE_EXT);
+      info.file = file ? file : "";
+    }
+    if (HasToken(ext, "EGL_EXT_device_query_name"))
+    {
+      const char* vendor = queryString(device, EGL_VENDOR);
+      const char* renderer = queryString(device, EGL_RENDERER_EXT);
+      info.name = std::string(vendor ? vendor : "") + (vendor && renderer ? " " : "") +
+        (renderer ? renderer : "");
+    }
+    eglGetError();  // a string a device does not offer is not an error here
+    found.push_back(info);
+  }
+  return found;
+}
+
+std::string DescribeDevice(const std::vector<DeviceInfo>& devices, std::size_t i)
+{
+  const DeviceInfo& d = devices[i];
+  std::string text = "EGL device " + std::to_string(i) + " of " + std::to_string(devices.size()) +
+    " (" + (d.software ? "software" : "hardware");
+  if (!d.file.empty())
+  {
+    text += ", " + d.file;
+  }
+  if (!d.name.empty())
+  {
+    text += ", " + d.name;
+  }
+  return text + ")";
+}
+
+std::string DescribeDevices(const std::vector<DeviceInfo>& devices)
+{
+  if (devices.empty())
+  {
+    return "no EGL device is listed (libEGL offers no EGL_EXT_device_enumeration, or no driver "
+           "has a device)";
+  }
+  std::string text;
+  for (std::size_t i = 0; i < devices.size(); ++i)
+  {
+    text += (i ? "; " : "") + DescribeDevice(devices, i);
+  }
+  return text;
+}
+
+// The device a DeviceIndex of -1 or `requested` asks for: `requested` when >= 0, else the
+// first hardware device, else the first device. -1 when there is none.
+int ChooseDevice(const std::vector<DeviceInfo>& devices, int requested)
+{
+  if (requested >= 0)
+  {
+    return requested < static_cast<int>(devices.size()) ? requested : -1;
+  }
+  for (std::size_t i = 0; i < devices.size(); ++i)
+  {
+    if (!devices[i].software)
+    {
+      return static_cast<int>(i);
+    }
+  }
+  return devices.empty() ? -1 : 0;
+}
+
 // All windows share one initialized EGLDisplay per platform; EGL has no
 // reference counting on eglInitialize/eglTerminate, so count users here and
 // terminate when the last window releases its context.
@@ -97,6 +208,24 @@ vtkEGLSurfacelessRenderWindow::vtkEGLSurfacelessRenderWindow()
   : Display(nullptr)
   , SurfacelessPlatform(false)
 {
+  if (const char* device = std::getenv("SSS_EGL_DEVICE"))
+  {
+    char* end = nullptr;
+    if (std::strcmp(device, "surfaceless") == 0)
+    {
+      this->UseDevicePlatform = false;
+      return;
+    }
+    const long index = std::strtol(device, &end, 10);
+    if (*device && end && *end == '\0' && index >= 0 && index < 1024)
+    {
+      this->DeviceIndex = static_cast<int>(index);
+    }
+    else
+    {
+      this->DeviceIndex = kBadDeviceVariable;
+    }
+  }
   this->SetWindowName("vtkEGLSurfacelessRenderWindow");
 }
 
@@ -119,9 +248,50 @@ bool vtkEGLSurfacelessRenderWindow::CreateContext()
   EGLDisplay dpy = EGL_NO_DISPLAY;
   EGLint eglMajor = 0, eglMinor = 0;
   this->SurfacelessPlatform = false;
+  this->DisplayDescription.clear();
+  this->SoftwareWhileHardwarePresent = false;
   std::string displayErrors;
 
-  if (HasToken(clientExt, "EGL_MESA_platform_surfaceless"))
+  // First choice: a device of EGL's device platform, hardware before Mesa's software one.
+  const std::vector<DeviceInfo> devices = QueryDevices(clientExt);
+  this->DevicesFound = DescribeDevices(devices);
+  if (this->DeviceIndex == kBadDeviceVariable)
+  {
+    this->Fail(std::string("SSS_EGL_DEVICE=") + std::getenv("SSS_EGL_DEVICE") +
+      " is neither a device number (0, 1, ...) nor \"surfaceless\"; devices found: " +
+      this->DevicesFound + ".");
+    return false;
+  }
+  const bool devicePlatform = HasToken(clientExt, "EGL_EXT_platform_device");
+  if (this->DeviceIndex >= 0 || (this->UseDevicePlatform && devicePlatform))
+  {
+    const int chosen = devicePlatform ? ChooseDevice(devices, this->DeviceIndex) : -1;
+    if (chosen >= 0)
+    {
+      dpy = eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[chosen].device, nullptr);
+      if (dpy != EGL_NO_DISPLAY && eglInitialize(dpy, &eglMajor, &eglMinor))
+      {
+        this->DisplayDescription = DescribeDevice(devices, static_cast<std::size_t>(chosen));
+        this->SoftwareWhileHardwarePresent = devices[chosen].software &&
+          std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& d) { return !d.software; });
+      }
+      else
+      {
+        displayErrors += DescribeDevice(devices, static_cast<std::size_t>(chosen)) + ": " +
+          EGLErrorText() + "; ";
+        dpy = EGL_NO_DISPLAY;
+      }
+    }
+    if (dpy == EGL_NO_DISPLAY && this->DeviceIndex >= 0)
+    {
+      this->Fail("EGL device " + std::to_string(this->DeviceIndex) + " cannot be used (" +
+        (devicePlatform ? displayErrors : std::string("libEGL offers no EGL_EXT_platform_device; ")) +
+        "devices found: " + this->DevicesFound + ").");
+      return false;
+    }
+  }
+
+  if (dpy == EGL_NO_DISPLAY && HasToken(clientExt, "EGL_MESA_platform_surfaceless"))
   {
     dpy = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (dpy == EGL_NO_DISPLAY && HasToken(clientExt, "EGL_EXT_platform_base"))
@@ -136,6 +306,7 @@ bool vtkEGLSurfacelessRenderWindow::CreateContext()
     if (dpy != EGL_NO_DISPLAY && eglInitialize(dpy, &eglMajor, &eglMinor))
     {
       this->SurfacelessPlatform = true;
+      this->DisplayDescription = "EGL surfaceless platform (EGL_PLATFORM_SURFACELESS_MESA)";
     }
     else
     {
@@ -143,7 +314,7 @@ bool vtkEGLSurfacelessRenderWindow::CreateContext()
       dpy = EGL_NO_DISPLAY;
     }
   }
-  else
+  else if (dpy == EGL_NO_DISPLAY)
   {
     displayErrors += "EGL_MESA_platform_surfaceless not offered by libEGL; ";
   }
@@ -154,9 +325,11 @@ bool vtkEGLSurfacelessRenderWindow::CreateContext()
     if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &eglMajor, &eglMinor))
     {
       displayErrors += "default display: " + EGLErrorText();
-      this->Fail("No EGL display could be initialized (" + displayErrors + ").");
+      this->Fail("No EGL display could be initialized (" + displayErrors +
+        "; devices found: " + this->DevicesFound + ").");
       return false;
     }
+    this->DisplayDescription = "EGL default display (eglGetDisplay(EGL_DEFAULT_DISPLAY))";
   }
 
   {
@@ -319,10 +492,8 @@ bool vtkEGLSurfacelessRenderWindow::IsContextCurrent()
 bool vtkEGLSurfacelessRenderWindow::ReportContext(std::ostream& s)
 {
   EGLDisplay dpy = static_cast<EGLDisplay>(this->Display);
-  s << "EGL platform:  "
-    << (this->SurfacelessPlatform ? "surfaceless (EGL_PLATFORM_SURFACELESS_MESA)"
-                                  : "eglGetDisplay(EGL_DEFAULT_DISPLAY)")
-    << "\n";
+  s << "EGL display:  " << this->DisplayDescription << "\n";
+  s << "EGL devices:  " << this->DevicesFound << "\n";
   s << "EGL version:  " << eglQueryString(dpy, EGL_VERSION) << "\n";
   s << "EGL vendor:  " << eglQueryString(dpy, EGL_VENDOR) << "\n";
   s << "OpenGL context:  core profile " << this->ContextMajor << "." << this->ContextMinor
@@ -340,6 +511,10 @@ void* vtkEGLSurfacelessRenderWindow::GetGenericDisplayId()
 void vtkEGLSurfacelessRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "DeviceIndex: " << this->DeviceIndex << "\n";
+  os << indent << "UseDevicePlatform: " << this->UseDevicePlatform << "\n";
+  os << indent << "DisplayDescription: " << this->DisplayDescription << "\n";
+  os << indent << "DevicesFound: " << this->DevicesFound << "\n";
   os << indent << "SurfacelessPlatform: " << this->SurfacelessPlatform << "\n";
   os << indent << "Display: " << this->Display << "\n";
 }
