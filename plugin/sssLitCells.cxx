@@ -30,7 +30,6 @@ namespace
 {
 constexpr int kFresnelTableSize = 256;
 constexpr int kRefinedSamplesPerSample = 8;  // where a cell's samples disagree
-constexpr int kFirstSamplesPerSample = 4;    // a cell's first test takes a quarter of them
 
 void SetFloat3Array(vtkShaderProgram* program, const char* name, const std::vector<Eigen::Vector3d>& v)
 {
@@ -253,7 +252,6 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   list.set(irradiance);
   irradiance->SetUniformi("fresnelTable", fresnel_->GetTextureUnit());
   irradiance->SetUniformi("fresnelTableSize", kFresnelTableSize);
-  irradiance->SetUniformi("cellFirstSamples", std::max(1, cell_samples / kFirstSamplesPerSample));
   irradiance->SetUniformi("cellSamples", cell_samples);
   irradiance->SetUniformi("cellRefinedSamples", kRefinedSamplesPerSample * cell_samples);
   for (int l = 0; l < lights; ++l)

@@ -38,10 +38,10 @@ public:
 
   // The Fresnel table of the material's eta.
   void bake(vtkOpenGLRenderWindow* window, const Material& material);
-  // E and the finest level of each light's source pyramid for the lights of `maps`: a
-  // quarter of `cell_samples` points per cell and light first, all of them where those
-  // disagree (a shadow edge or the terminator crosses the cell), eight times as many where
-  // those disagree too; `disc_radius` (mm) bounds the curvature that lifts a cell's samples.
+  // E and the finest level of each light's source pyramid for the lights of `maps`, from
+  // `cell_samples` points per cell and light (eight times as many where they disagree: an
+  // edge crosses the cell); `disc_radius` (mm) bounds the curvature that lifts a cell's
+  // samples.
   bool light(vtkOpenGLRenderWindow* window, const SurfelList& list, const LightMapAtlas& maps,
     double disc_radius, int cell_samples, std::string& error);
   // The upward pass: the coarser levels of each pyramid from the finest. `lit` counts the

@@ -2,15 +2,12 @@
 // Step 2, per surfel and light (core/surfel_irradiance.h is the same on the CPU): the
 // irradiance of eq. 15 averaged over the surfel's cell, E = albedo 1/S Sum_s E_light(y_s)
 // Ft(eta, theta_s) cos(theta_s) V(y_s) over S points spread over a disc of the cell's area on
-// the surfel's local surface, V from the light's map. A cell is sampled only as finely as it
-// needs: first cellFirstSamples points; where they disagree (an edge or the terminator
-// crosses the cell) cellSamples, and where those disagree too cellRefinedSamples. A cell
-// wholly lit or wholly shadowed stops after the first points. And the cell as a source of the far field:
+// the surfel's local surface, V from the light's map, sampled again with more points where the
+// first ones disagree (an edge crosses the cell); and the cell as a source of the far field:
 // its point, power E dA, normal (turned towards the light), radius and covariance, the finest
 // level of that light's source pyramid.
 
 uniform int light;               // which light
-uniform int cellFirstSamples;
 uniform int cellSamples;
 uniform int cellRefinedSamples;
 
@@ -44,8 +41,8 @@ void main()
     float turn = 6.283185307 * fract(sin(dot(vec2(at), vec2(12.9898, 78.233))) * 43758.5453);
     vec3 sum = vec3(0.0);
     int lit = 0;
-    int count = cellFirstSamples;
-    for (int pass = 0; pass < 3; ++pass)
+    int count = cellSamples;
+    for (int pass = 0; pass < 2; ++pass)
     {
       sum = vec3(0.0);
       lit = 0;
@@ -65,12 +62,11 @@ void main()
         }
       }
       sum /= float(count);
-      int next = pass == 0 ? cellSamples : cellRefinedSamples;
-      if (lit == 0 || lit == count || next <= count)
+      if (lit == 0 || lit == count || cellRefinedSamples <= count)
       {
         break;
       }
-      count = next;
+      count = cellRefinedSamples;
     }
     E = lightIrradiance[light] * texelFetch(surfelAlbedo, at, 0).rgb * sum;
   }
