@@ -13,6 +13,7 @@ constexpr double kGaussX[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255
 constexpr double kGaussW[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
                                0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
                                0.2223810344533745, 0.1012285362903763};
+constexpr double kGauss2 = 0.5773502691896258;
 }  // namespace
 
 namespace {
@@ -57,29 +58,81 @@ void clip_to_nearer(Polygon& polygon, const Eigen::Vector2d& own, const Eigen::V
   clip(polygon, n, n.dot(0.5 * (own + other)), scratch);
 }
 
-Rgb kernel_over(const Polygon& polygon, const RadialKernel& kernel, double kappa) {
-  constexpr double kGauss2 = 0.5773502691896258;
-  Rgb sum{0.0, 0.0, 0.0};
+namespace {
+
+constexpr double kNarrowEdge = 0.2;   // radians: an edge seen under less takes 2 points
+constexpr double kEdgePiece = 0.5;    // radians: wider edges take 8 points per piece this wide
+
+// Adds Integral f(rho) d theta along the edge a -> b, the receiver at the origin (one edge of
+// Green's theorem in polar coordinates), integrated in the angle phi from the foot of the
+// perpendicular on the edge's line (rho = h / cos phi): a constant f integrates exactly, so
+// the far edges of a cell that does not hold the origin cancel its near edges exactly, and a
+// kernel peaked at the origin stays smooth along an edge that passes close to it.
+// f(rho, Rgb&) writes the three channels.
+template <class F>
+void add_edge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, F&& f, Rgb& sum) {
+  const double cross = a.x() * b.y() - a.y() * b.x();
+  const Eigen::Vector2d e = b - a;
+  const double length = e.norm();
+  if (cross == 0.0 || !(length > 0.0)) return;
+  const Eigen::Vector2d along = e / length;
+  const double h = std::fabs(cross) / length;  // the edge's line from the origin
+  const double phi_a = std::atan2(a.dot(along), h), phi_b = std::atan2(b.dot(along), h);
+  const double sign = cross > 0.0 ? 1.0 : -1.0;  // d theta = sign d phi
+  const double span = phi_b - phi_a;
+  const bool narrow = span < kNarrowEdge;
+  const int pieces = narrow ? 1 : static_cast<int>(std::ceil(span / kEdgePiece));
+  const double piece = span / pieces;
+  Rgb value;
+  for (int k = 0; k < pieces; ++k) {
+    const double start = phi_a + k * piece;
+    for (int g = 0; g < (narrow ? 2 : 8); ++g) {
+      const double t = narrow ? 0.5 * (1.0 + (g ? kGauss2 : -kGauss2)) : 0.5 * (kGaussX[g] + 1.0);
+      const double weight = narrow ? 0.5 : 0.5 * kGaussW[g];
+      const double phi = start + t * piece;
+      f(h / std::cos(phi), value);
+      for (int c = 0; c < 3; ++c) sum[c] += sign * weight * piece * value[c];
+    }
+  }
+}
+
+// A polygon's area and centroid.
+double area_centroid(const Polygon& polygon, Eigen::Vector2d& centroid) {
+  double twice = 0.0;
+  centroid.setZero();
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Eigen::Vector2d& a = polygon[i];
     const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
-    const Eigen::Vector2d e = b - a;
-    const double cross = a.x() * b.y() - a.y() * b.x();  // d theta = cross / |x|^2 dt
-    if (cross == 0.0) continue;
-    // An edge seen under a small angle needs 2 points, a wide one (the receiver's own cell) 8.
-    const bool wide = std::fabs(cross) > 0.2 * a.norm() * b.norm() || a.dot(b) < 0.0;
-    const int points = wide ? 8 : 2;
-    for (int g = 0; g < points; ++g) {
-      const double t = wide ? 0.5 * (kGaussX[g] + 1.0) : 0.5 * (1.0 + (g ? kGauss2 : -kGauss2));
-      const double weight = wide ? kGaussW[g] : 1.0;
-      const Eigen::Vector2d x = a + t * e;
-      const double r2 = x.squaredNorm();
-      if (!(r2 > 0.0)) continue;
-      const Rgb G = kernel.G(std::sqrt(r2), kappa);
-      const double w = 0.5 * weight * cross / r2;
-      for (int c = 0; c < 3; ++c) sum[c] += w * G[c];
-    }
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    twice += cross;
+    centroid += cross * (a + b);
   }
+  if (twice != 0.0) centroid /= 3.0 * twice;
+  return 0.5 * twice;
+}
+
+// Where the contour sum of a channel comes out negative (rounding in a cell far from the
+// receiver, whose edges cancel), the kernel at the cell's centroid times its area: a positive
+// kernel over a positive area.
+template <class K>
+void positive_or_point_rule(const Polygon& polygon, K&& kernel_at, Rgb& sum) {
+  if (sum[0] >= 0.0 && sum[1] >= 0.0 && sum[2] >= 0.0) return;
+  Eigen::Vector2d centroid;
+  const double area = std::fabs(area_centroid(polygon, centroid));
+  Rgb k;
+  kernel_at(centroid.norm(), k);
+  for (int c = 0; c < 3; ++c)
+    if (!(sum[c] >= 0.0)) sum[c] = area * k[c];
+}
+
+}  // namespace
+
+Rgb kernel_over(const Polygon& polygon, const RadialKernel& kernel, double kappa) {
+  Rgb sum{0.0, 0.0, 0.0};
+  const auto G = [&](double rho, Rgb& g) { g = kernel.G(rho, kappa); };
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    add_edge(polygon[i], polygon[(i + 1) % polygon.size()], G, sum);
+  positive_or_point_rule(polygon, [&](double rho, Rgb& k) { k = kernel.K(rho, kappa); }, sum);
   return sum;
 }
 
@@ -102,27 +155,23 @@ double pole_integral(double z, double s, double a, double rho) {
 
 Rgb dipole_over(const Polygon& polygon, const Dipole& dipole, double height) {
   Rgb sum{0.0, 0.0, 0.0};
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Eigen::Vector2d& a = polygon[i];
-    const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
-    const double cross = a.x() * b.y() - a.y() * b.x();
-    if (cross == 0.0) continue;
-    for (int g = 0; g < 8; ++g) {
-      const Eigen::Vector2d x = a + 0.5 * (kGaussX[g] + 1.0) * (b - a);
-      const double r2 = x.squaredNorm();
-      if (!(r2 > 0.0)) continue;
-      const double rho = std::sqrt(r2);
-      const double w = 0.5 * kGaussW[g] * cross / r2;
-      for (int c = 0; c < 3; ++c) {
-        const DipoleChannel& ch = dipole.channel[c];
-        // The real pole z_r under the sources, the virtual one z_v above them.
-        const double G = ch.alpha_prime / (4.0 * kPi) *
-                         (pole_integral(ch.z_r, ch.s_tr, height + ch.z_r, rho) +
-                          pole_integral(ch.z_v, ch.s_tr, height - ch.z_v, rho));
-        sum[c] += w * G;
-      }
+  // The real pole z_r under the sources, the virtual one z_v above them.
+  const auto G = [&](double rho, Rgb& g) {
+    for (int c = 0; c < 3; ++c) {
+      const DipoleChannel& ch = dipole.channel[c];
+      g[c] = ch.alpha_prime / (4.0 * kPi) *
+             (pole_integral(ch.z_r, ch.s_tr, height + ch.z_r, rho) +
+              pole_integral(ch.z_v, ch.s_tr, height - ch.z_v, rho));
     }
-  }
+  };
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    add_edge(polygon[i], polygon[(i + 1) % polygon.size()], G, sum);
+  positive_or_point_rule(polygon, [&](double rho, Rgb& k) {
+    for (int c = 0; c < 3; ++c) {
+      const DipoleChannel& ch = dipole.channel[c];
+      k[c] = ch.Rd_from_distances(std::hypot(rho, height + ch.z_r), std::hypot(rho, height - ch.z_v));
+    }
+  }, sum);
   return sum;
 }
 

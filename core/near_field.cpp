@@ -49,10 +49,22 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
   // radius; more where a sparse spot's cell reaches to the disc that closes the surface).
   double cell_reach = 2.0 * r;
   for (const Eigen::Vector2d& v : cells.outline) cell_reach = std::max(cell_reach, v.norm());
-  const RadialKernel kernel(dipole, reach + cell_reach, kappa_limit);
+  // The table need not reach past the kernel's support, where G has its final value: a few
+  // huge cells (stray points of a scan) must not spread its samples too thin for the kernel.
+  const double support = dipole.max_support_radius(kKernelSupportFraction);
+  const RadialKernel kernel(dipole, std::min(reach + cell_reach, std::max(support, reach)),
+                            kappa_limit);
+  // An entry that carries less than the kernel's support fraction of its total in every
+  // channel is left out, as the sources beyond the support are.
+  Rgb negligible;
+  for (int c = 0; c < 3; ++c)
+    negligible[c] = kKernelSupportFraction * dipole.channel[c].total_diffuse_reflectance();
+  const auto matters = [&negligible](const Rgb& w) {
+    return w[0] > negligible[0] || w[1] > negligible[1] || w[2] > negligible[2];
+  };
   const long count = static_cast<long>(n);
 #pragma omp parallel default(none) shared(surfels, cells, index, dipole, receivers, rows, count, \
-                                          r, reach, kappa_limit, kernel)
+                                          r, reach, kappa_limit, kernel, matters)
   {
     std::vector<std::size_t> near, other;
     Polygon cell;
@@ -91,7 +103,7 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
         }
         if (twice_area < 0.0) std::reverse(cell.begin(), cell.end());
         const Rgb w = kernel_over(cell, kernel, kappa);
-        if (w[0] > 0.0 || w[1] > 0.0 || w[2] > 0.0) row.add(static_cast<std::uint32_t>(j), w);
+        if (matters(w)) row.add(static_cast<std::uint32_t>(j), w);
       }
       for (std::size_t j : other) {
         if (cells.first[j] == cells.first[j + 1]) continue;
@@ -105,7 +117,8 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
         cell.clear();
         for (std::uint32_t v = cells.first[j]; v < cells.first[j + 1]; ++v)
           cell.push_back(cells.outline[v] - foot);
-        row.add(static_cast<std::uint32_t>(j), dipole_over(cell, dipole, height));
+        const Rgb w = dipole_over(cell, dipole, height);
+        if (matters(w)) row.add(static_cast<std::uint32_t>(j), w);
       }
     }
   }

@@ -13,12 +13,16 @@ constexpr int kSamples = 8192;
 }
 
 Rgb RadialKernel::bend(const Dipole& dipole, double rho, double kappa) {
+  return bend(dipole.channel, rho, kappa);
+}
+
+Rgb RadialKernel::bend(const std::array<DipoleChannel, 3>& channel, double rho, double kappa) {
   const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
   const SurfacePoint y = on_local_surface(Eigen::Vector3d::Zero(), n, kappa,
                                           Eigen::Vector3d(rho, 0.0, 0.0));
   Rgb ratio;
   for (int c = 0; c < 3; ++c) {
-    const DipoleChannel& ch = dipole.channel[c];
+    const DipoleChannel& ch = channel[c];
     const double planar = ch.Rd(rho);
     ratio[c] = planar > 0.0 ? ch.Rd_from_distances((y.position - ch.z_r * y.normal).norm(),
                                                    (y.position + ch.z_v * y.normal).norm()) /
@@ -29,7 +33,7 @@ Rgb RadialKernel::bend(const Dipole& dipole, double rho, double kappa) {
 }
 
 RadialKernel::RadialKernel(const Dipole& dipole, double rho_max, double kappa_limit)
-    : rho_max_(rho_max), kappa_limit_(kappa_limit) {
+    : channel_(dipole.channel), rho_max_(rho_max), kappa_limit_(kappa_limit) {
   if (!std::isfinite(rho_max) || !(rho_max > 0.0) || !std::isfinite(kappa_limit) ||
       !(kappa_limit > 0.0)) {
     std::ostringstream msg;
@@ -75,6 +79,13 @@ Rgb RadialKernel::G(double rho, double kappa) const {
     g[c] = v[0] + k * v[1] + k * k * v[2];
   }
   return g;
+}
+
+Rgb RadialKernel::K(double rho, double kappa) const {
+  const Rgb b = bend(channel_, rho, std::clamp(kappa, -kappa_limit_, kappa_limit_));
+  Rgb k;
+  for (int c = 0; c < 3; ++c) k[c] = channel_[c].Rd(rho) * b[c];
+  return k;
 }
 
 }  // namespace sss

@@ -24,6 +24,8 @@ class RadialKernel {
 
   // G per channel at rho (clamped to the table) for curvature kappa (clamped to the limit).
   Rgb G(double rho, double kappa) const;
+  // The kernel itself, Rd(rho) times the exact bend (not the fit), per channel: >= 0.
+  Rgb K(double rho, double kappa) const;
   double rho_max() const { return rho_max_; }
   double kappa_limit() const { return kappa_limit_; }
 
@@ -33,6 +35,9 @@ class RadialKernel {
   static Rgb bend(const Dipole& dipole, double rho, double kappa);
 
  private:
+  static Rgb bend(const std::array<DipoleChannel, 3>& channel, double rho, double kappa);
+
+  std::array<DipoleChannel, 3> channel_{};
   double rho_max_ = 0.0, kappa_limit_ = 0.0, step_ = 0.0;
   std::vector<std::array<Rgb, 3>> table_;  // per sample: G0, G1, G2
 };

@@ -16,7 +16,7 @@
 namespace sss {
 
 // Raise when the file layout or what render_reference computes changes: old files then miss.
-constexpr std::uint32_t kReferenceCacheVersion = 10;
+constexpr std::uint32_t kReferenceCacheVersion = 11;
 
 // What identifies one reference result.
 struct ReferenceKey {

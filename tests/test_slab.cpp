@@ -124,5 +124,46 @@ TEST(SlabCoarseMap, TexelsOfADiscRadiusStillMeetClosedForm) {
   expect_closed_form(material, Dipole(material).min_z_r(), coarse, "marble coarse map");
 }
 
+// A scan's isolated point (through a window, between flight lines) gets a cell and a disc tens
+// of metres wide; the near field's kernel table must still resolve the kernel at every
+// receiver. It once spread its samples over the widest cell's reach (on the airborne tile a
+// cell of 103 m, so samples 12.7 mm apart), and skin's green and blue came out 10 to 1000
+// times too dark there, in both methods (here, before: -2 / -16 / -47 %). Skin1 on four patches of a plane 50 mm apart (a scan
+// in metres: the kernel ends inside each receiver's cell), 30 m around an isolated point.
+TEST(SlabWithAnIsolatedPoint, CentreStillMeetsClosedForm) {
+  const Material skin = Material::preset("skin1", 1.3);
+  const Dipole dipole(skin);
+  const double spacing = 50.0, away = 30000.0;
+  const SurfelCloud patch = make_slab(8 * spacing, spacing);
+  SurfelCloud plane;
+  const Eigen::Vector3d centres[4] = {{away, 0, 0}, {-away, 0, 0}, {0, away, 0}, {0, -away, 0}};
+  for (const Eigen::Vector3d& c : centres)
+    for (std::size_t i = 0; i < patch.size(); ++i) {
+      plane.positions.push_back(patch.positions[i] + c);
+      plane.normals.push_back(patch.normals[i]);
+    }
+  plane.positions.push_back(Eigen::Vector3d::Zero());
+  plane.normals.push_back(Eigen::Vector3d::UnitZ());
+  plane.radius = patch.radius;
+  assign_splat_radii(plane);
+  plane.validate();
+  ReferenceSettings at_centre;
+  at_centre.receivers = {centre_of(patch)};  // the first patch's centre
+  at_centre.light_map.max_map_size = 1024;   // a plane lit straight on: nothing to shadow
+  const double E = 1.0;
+  const ReferenceSolver solver(plane, skin, {{Eigen::Vector3d(0, 0, 1), E}}, at_centre);
+  const Rgb B = solver.B(0);
+  std::printf("[ slab ] isolated point: disc radius %.0f mm, cells' radius %.0f mm; %.1f s geometry, %.1f s light\n",
+              plane.radii.back(), plane.radius, solver.stats().seconds_geometry, solver.stats().seconds_light);
+  for (int c = 0; c < 3; ++c) {
+    const double Ft0 = fresnel_transmittance(skin.eta[c], 1.0);
+    const double expected = E * Ft0 * dipole.channel[c].total_diffuse_reflectance() / M_PI;
+    std::printf("[ slab ] skin1, patches 50 mm apart around an isolated point, channel %d: B "
+                "%.6g closed form %.6g (%+.4f %%)\n", c, B[c], expected,
+                100 * (B[c] / expected - 1));
+    EXPECT_NEAR(B[c] / expected, 1.0, 0.01) << "channel " << c;
+  }
+}
+
 }  // namespace
 }  // namespace sss
