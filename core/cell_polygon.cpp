@@ -96,10 +96,10 @@ void add_edge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, F&& f, Rgb& su
   }
 }
 
-// A polygon's area and centroid.
-double area_centroid(const Polygon& polygon, Eigen::Vector2d& centroid) {
+// The centroid of a polygon of nonzero area.
+Eigen::Vector2d centroid_of(const Polygon& polygon) {
   double twice = 0.0;
-  centroid.setZero();
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Eigen::Vector2d& a = polygon[i];
     const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
@@ -107,8 +107,7 @@ double area_centroid(const Polygon& polygon, Eigen::Vector2d& centroid) {
     twice += cross;
     centroid += cross * (a + b);
   }
-  if (twice != 0.0) centroid /= 3.0 * twice;
-  return 0.5 * twice;
+  return twice != 0.0 ? Eigen::Vector2d(centroid / (3.0 * twice)) : centroid;
 }
 
 // Where the contour sum of a channel comes out negative (rounding in a cell far from the
@@ -117,15 +116,24 @@ double area_centroid(const Polygon& polygon, Eigen::Vector2d& centroid) {
 template <class K>
 void positive_or_point_rule(const Polygon& polygon, K&& kernel_at, Rgb& sum) {
   if (sum[0] >= 0.0 && sum[1] >= 0.0 && sum[2] >= 0.0) return;
-  Eigen::Vector2d centroid;
-  const double area = std::fabs(area_centroid(polygon, centroid));
+  const double area = std::fabs(signed_area(polygon));
   Rgb k;
-  kernel_at(centroid.norm(), k);
+  kernel_at(centroid_of(polygon).norm(), k);
   for (int c = 0; c < 3; ++c)
     if (!(sum[c] >= 0.0)) sum[c] = area * k[c];
 }
 
 }  // namespace
+
+double signed_area(const Polygon& polygon) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return 0.5 * twice;
+}
 
 Rgb kernel_over(const Polygon& polygon, const RadialKernel& kernel, double kappa) {
   Rgb sum{0.0, 0.0, 0.0};

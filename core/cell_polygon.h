@@ -24,6 +24,9 @@ void clip(Polygon& polygon, const Eigen::Vector2d& normal, double offset, Polygo
 void clip_to_nearer(Polygon& polygon, const Eigen::Vector2d& own, const Eigen::Vector2d& other,
                     Polygon& scratch);
 
+// The polygon's area, positive when its corners run counter-clockwise (the shoelace formula).
+double signed_area(const Polygon& polygon);
+
 // Integral over the polygon of K at distance rho from the origin, per channel.
 Rgb kernel_over(const Polygon& polygon, const RadialKernel& kernel, double kappa);
 

@@ -91,17 +91,11 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
         tangent_frame(surfels.normals[j], u1, u2);
         const Eigen::Vector3d offset = surfels.positions[j] - p;
         cell.clear();
-        double twice_area = 0.0;
         for (std::uint32_t v = cells.first[j]; v < cells.first[j + 1]; ++v) {
           const Eigen::Vector3d x = offset + cells.outline[v].x() * u1 + cells.outline[v].y() * u2;
           cell.emplace_back(x.dot(t1), x.dot(t2));
         }
-        for (std::size_t v = 0; v < cell.size(); ++v) {
-          const Eigen::Vector2d& a = cell[v];
-          const Eigen::Vector2d& b = cell[(v + 1) % cell.size()];
-          twice_area += a.x() * b.y() - a.y() * b.x();
-        }
-        if (twice_area < 0.0) std::reverse(cell.begin(), cell.end());
+        if (signed_area(cell) < 0.0) std::reverse(cell.begin(), cell.end());
         const Rgb w = kernel_over(cell, kernel, kappa);
         if (matters(w)) row.add(static_cast<std::uint32_t>(j), w);
       }

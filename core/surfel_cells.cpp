@@ -79,13 +79,7 @@ SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index) 
   out.area.resize(n);
   out.first.resize(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    double twice = 0.0;
-    for (std::size_t k = 0; k < cells[i].size(); ++k) {
-      const Eigen::Vector2d& a = cells[i][k];
-      const Eigen::Vector2d& b = cells[i][(k + 1) % cells[i].size()];
-      twice += a.x() * b.y() - a.y() * b.x();
-    }
-    out.area[i] = 0.5 * twice;
+    out.area[i] = signed_area(cells[i]);
     out.first[i + 1] = out.first[i] + static_cast<std::uint32_t>(cells[i].size());
   }
   out.outline.reserve(out.first[n]);
