@@ -390,7 +390,7 @@ void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
   auto window = make_window(o);
   TranslucentScene scene(window, cloud.surfels,
                          sss::Material::preset(materials[0], 1.3, cloud.mm_per_unit), lights);
-  scene.aim_camera(cloud.surfels.bounds().center(), cloud.view_dir, cloud.up, false);
+  scene.aim_camera(cloud.surfels.positions, cloud.view_dir, cloud.up, false);
   scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
   scene.window->Render();
   const double plain = sss::cli::time_plain_points(scene, o.frames);
@@ -494,7 +494,7 @@ void run_scale(const Options& o, std::ostream& csv) {
     std::fprintf(stderr, "scale: %zu surfels (%.1f s to make)\n", cloud.surfels.size(), clock.lap());
     auto window = make_window(o);
     TranslucentScene scene(window, cloud.surfels, material, {{kObjectLight, 1.0}});
-    scene.aim_camera(cloud.surfels.bounds().center(), kObjectView, kObjectUp, false);
+    scene.aim_camera(cloud.surfels.positions, kObjectView, kObjectUp, false);
     scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
     scene.window->Render();
     const double plain = sss::cli::time_plain_points(scene, o.frames);

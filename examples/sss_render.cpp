@@ -32,6 +32,7 @@
 #include "baked_ply.h"
 #include "cli_options.h"
 #include "cloud_input.h"
+#include "isolated_points.h"
 #include "fresnel.h"
 #include "linear_image.h"
 #include "png_output.h"
@@ -84,8 +85,15 @@ struct Timings {
   double light_static = 0, light_moving = 0, plain_points = 0;  // mean seconds per frame
 };
 
+// What the load left out as isolated (cloud_input.h).
+struct Isolation {
+  std::size_t left_out = 0;
+  double largest_ratio = 0.0;
+};
+
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
-                 const std::vector<sss::Light>& lights, vtkSubsurfacePass* pass,
+                 const Isolation& isolation, const std::vector<sss::Light>& lights,
+                 vtkSubsurfacePass* pass,
                  const sss::cli::RendererInfo& renderer, const Timings& t,
                  const std::string& path) {
   sss::write_whole_file(path, [&](std::ostream& out) {
@@ -111,7 +119,12 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
     out << "],\n  \"camera\": {\"view_direction\": " << json_vector(o.view_dir.normalized())
         << ", \"up\": " << json_vector(o.up) << ", \"width\": " << o.width
         << ", \"height\": " << o.height << ", \"projection\": \""
-        << (o.ortho ? "orthographic" : "perspective") << "\"},\n"
+        << (o.ortho ? "orthographic" : "perspective") << "\", \"fit\": \""
+        << (o.fit_all ? "all" : "surface") << "\"},\n"
+        << "  \"isolated_points\": {\"ratio\": " << o.isolation_ratio
+        << ", \"neighbours\": " << sss::IsolationSettings{}.neighbours
+        << ", \"left_out\": " << isolation.left_out
+        << ", \"largest_ratio\": " << isolation.largest_ratio << "},\n"
         << "  \"counts\": {\"surfels\": " << cloud.size()
         << ", \"lit_cells\": " << pass->GetLastLitCells()
         << ", \"near_field_entries\": " << pass->GetLastNearFieldEntries()
@@ -160,11 +173,14 @@ int run(const Options& o) {
       o.custom_material ? sss::Material::custom(o.sigma_a, o.sigma_s, o.eta, o.scale)
                         : sss::Material::preset(o.material, o.eta, o.scale);
   sss::SurfelCloud cloud;
+  Isolation isolation;
   if (o.input.empty()) {
     cloud = sss::make_torus(30.0, 7.0, 0.6);  // mm; its 7 mm tube glows when lit from behind
     cloud.validate();
   } else {
-    sss::cli::LoadedCloud loaded = sss::cli::load_cloud(o.input, o.mesh_samples, o.memory_cap);
+    sss::cli::LoadedCloud loaded =
+      sss::cli::load_cloud(o.input, o.mesh_samples, o.memory_cap, o.isolation_ratio);
+    isolation = {loaded.isolated, loaded.largest_isolation};
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = std::move(loaded.cloud);
   }
@@ -186,7 +202,7 @@ int run(const Options& o) {
   if (o.splatting == "discs") scene.mapper->SetSplattingToDiscs();
   pass->SetExposure(o.exposure);
   pass->SetCaptureLinearImage(!o.linear_pfm.empty() || o.exposure == 0.0);
-  scene.aim_camera(cloud.bounds().center(), o.view_dir, o.up, o.ortho);
+  scene.aim_camera(cloud.positions, o.view_dir, o.up, o.ortho, o.fit_all);
   vtkCamera* camera = scene.renderer->GetActiveCamera();
 
   if (o.method == "reference") {
@@ -263,7 +279,7 @@ int run(const Options& o) {
   if (o.method == "gpu" && scene.pass->GetSurfelRuns() > 0)
     std::fprintf(stderr, "last light move: %s\n", scene.pass->GetLastLightMoveProfile().c_str());
   if (!o.stats_json.empty())
-    write_stats(o, material, cloud, lights, pass, renderer, timings, o.stats_json);
+    write_stats(o, material, cloud, isolation, lights, pass, renderer, timings, o.stats_json);
   std::fprintf(stderr, "wrote %s (first frame %.3f s, camera-only frame %.3f s)\n",
                o.output_png.c_str(), timings.first_frame, timings.camera_frame);
   return 0;

@@ -5,6 +5,7 @@
 #include <pcl/visualization/pcl_visualizer.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkSubsurfacePass.h>
 
@@ -21,6 +22,7 @@
 #include "procedural_shapes.h"
 #include "renderer_info.h"
 #include "sssPclTranslucentCloud.h"
+#include "translucent_scene.h"
 
 namespace {
 
@@ -41,6 +43,10 @@ options (default in brackets)
                        each in docs/benchmark/bench.md) [balanced]
   --samples N          sample N points on a PLY mesh's surface instead of its vertices [0]
   --memory-cap MIB     largest memory the file or --samples may claim [half the physical memory]
+  --isolated R|keep    leave out points whose mean distance to their 16 nearest exceeds R
+                       times that of those neighbours (stray returns, flying pixels) [5]
+  --fit surface|all    first frame holds 99 % of the points (surface) or all of them, as
+                       PCL's reset (all; the r key resets so) [surface]
   --size WxH           window size in pixels [1024x768]
   --keys STRING        press these keys one per frame after the first (scripted demos)
   --frames N           quit after N frames (0: run until the window is closed) [0]
@@ -64,6 +70,8 @@ struct Options {
   sss::Quality quality = sss::Quality::Balanced;
   std::size_t samples = 0;
   std::size_t memory_cap = 0;  // 0: the loader's default
+  double isolation_ratio = 5.0;  // 0: isolated points kept
+  bool fit_all = false;
   int width = 1024, height = 768;
   std::string keys;
   int frames = 0;
@@ -90,6 +98,16 @@ Options parse(int argc, char** argv) {
       o.samples = sss::cli::count(flag, value(), 1e9);
     } else if (flag == "--memory-cap") {
       o.memory_cap = sss::cli::memory_cap(flag, value());
+    } else if (flag == "--isolated") {
+      const std::string ratio = value();
+      o.isolation_ratio = ratio == "keep" ? 0.0 : sss::cli::number(flag, ratio);
+      if (ratio != "keep" && !(o.isolation_ratio > 1.0 && o.isolation_ratio <= 1e6))
+        throw std::invalid_argument("--isolated: needs a ratio above 1 (up to 1e6) or keep");
+    } else if (flag == "--fit") {
+      const std::string fit = value();
+      if (fit != "surface" && fit != "all")
+        throw std::invalid_argument("--fit: needs surface or all, not '" + fit + "'");
+      o.fit_all = fit == "all";
     } else if (flag == "--size") {
       const std::string s = value();
       if (std::sscanf(s.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 16 ||
@@ -110,6 +128,14 @@ Options parse(int argc, char** argv) {
     }
   }
   return o;
+}
+
+// The surfels' positions, for the camera's fit.
+std::vector<Eigen::Vector3d> points_of(const sss::Surfels& surfels) {
+  std::vector<Eigen::Vector3d> points(surfels.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    surfels.polydata->GetPoint(static_cast<vtkIdType>(i), points[i].data());
+  return points;
 }
 
 // The procedural torus of the demo as a PCL cloud with normals.
@@ -201,6 +227,8 @@ int run(const Options& o) {
   settings.material = o.material;
   settings.millimetres_per_unit = o.mm_per_unit;
   settings.quality = o.quality;
+  settings.surfels.drop_isolated = o.isolation_ratio > 0.0;
+  if (settings.surfels.drop_isolated) settings.surfels.isolation_ratio = o.isolation_ratio;
   sss::TranslucentCloud::Ptr cloud;
   if (o.input.empty()) {
     cloud = sss::addTranslucentCloud(pcl_viewer, torus(), "cloud", settings);
@@ -217,7 +245,9 @@ int run(const Options& o) {
   std::fprintf(stderr, "%s\n", cloud->surfels().summary().c_str());
 
   pcl_viewer.resetCamera();
-  vtkCamera& camera = *pcl_viewer.getRendererCollection()->GetFirstRenderer()->GetActiveCamera();
+  vtkRenderer* renderer = pcl_viewer.getRendererCollection()->GetFirstRenderer();
+  if (!o.fit_all) sss::cli::frame_points(renderer, points_of(cloud->surfels()));
+  vtkCamera& camera = *renderer->GetActiveCamera();
   Viewer viewer{pcl_viewer, *cloud, {}};
   double up[3], forward[3];
   camera.GetViewUp(up);

@@ -107,6 +107,9 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
   --view-dir X,Y,Z          from the object towards the camera (default 0,-1,0.6)
   --up X,Y,Z                camera up (default 0,0,1)
   --ortho                   orthographic camera (default perspective, 30 degree view angle)
+  --fit surface|all         the camera's frame holds 99 % of the points, centred on them
+                            (surface, default: stray returns and a scan's far rows do not
+                            shrink the surface), or every point (all: VTK's ResetCamera)
   --size WxH                image size in pixels (default 512x512)
   --method gpu|reference    gpu (default): the real-time method; reference: the CPU
                             evaluation of the same model at full precision (progress on
@@ -144,6 +147,10 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
                             or discs (hard discs)
   --samples N               for a PLY mesh: N points sampled uniformly on its surface instead
                             of its vertices, as pcl_mesh_sampling does (default 0: vertices)
+  --isolated RATIO|keep     leave out points whose mean distance to their 16 nearest exceeds
+                            RATIO times that of those neighbours (default 5: stray returns,
+                            flying pixels; the shared scans' own surfaces reach 3.0); keep:
+                            none left out
   --memory-cap MIB          largest memory a file or --samples may claim; a header that
                             claims more, or more data than the file holds, is refused before
                             anything is read (default: half the physical memory)
@@ -259,6 +266,16 @@ Options parse(int argc, char** argv) {
       o.bake_ply = value();
     } else if (flag == "--ortho") {
       o.ortho = true;
+    } else if (flag == "--fit") {
+      const std::string fit = value();
+      if (fit != "surface" && fit != "all")
+        throw std::invalid_argument("--fit: needs surface or all, not '" + fit + "'");
+      o.fit_all = fit == "all";
+    } else if (flag == "--isolated") {
+      const std::string ratio = value();
+      o.isolation_ratio = ratio == "keep" ? 0.0 : number(flag, ratio);
+      if (ratio != "keep" && !(o.isolation_ratio > 1.0 && o.isolation_ratio <= 1e6))
+        throw std::invalid_argument("--isolated: needs a ratio above 1 (up to 1e6) or keep");
     } else if (flag == "--grid-level") {
       o.grid_level = whole(flag, value(), 0, 10);
     } else if (flag == "--max-map") {

@@ -35,6 +35,7 @@ struct Options {
   Eigen::Vector3d view_dir{0.0, -1.0, 0.6};
   Eigen::Vector3d up{0.0, 0.0, 1.0};
   bool ortho = false;
+  bool fit_all = false;  // --fit all: the camera fitted to every point (VTK's ResetCamera)
   int width = 512, height = 512;
   std::string method = "gpu";
   std::string backend = "egl";
@@ -52,6 +53,7 @@ struct Options {
   std::string splatting = "blended";      // blended, discs
   std::size_t mesh_samples = 0;
   std::size_t memory_cap = 0;  // bytes a load may claim; 0: the loader's default
+  double isolation_ratio = 5.0;  // isolated points left out above it (isolated_points.h); 0 keeps
   bool help = false;
 };
 

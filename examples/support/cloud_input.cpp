@@ -9,12 +9,16 @@
 
 namespace sss::cli {
 
-LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples, std::size_t memory_cap) {
+LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples, std::size_t memory_cap,
+                       double isolation_ratio) {
   LoadOptions load;
   load.mesh_samples = mesh_samples;
   load.memory_cap = memory_cap;
   const auto points = loadPointCloud<pcl::PointXYZRGBNormal>(path, load);
-  const Surfels surfels = makeSurfels(points);
+  SurfelOptions options;
+  options.drop_isolated = isolation_ratio > 0.0;
+  if (options.drop_isolated) options.isolation_ratio = isolation_ratio;
+  const Surfels surfels = makeSurfels(points, options);
 
   vtkPolyData* polydata = surfels.polydata;
   vtkDataArray* normals = polydata->GetPointData()->GetNormals();
@@ -34,6 +38,8 @@ LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples, std::s
     }
   }
   cloud.radius = surfels.spacing;
+  loaded.isolated = surfels.isolated_points;
+  loaded.largest_isolation = surfels.largest_isolation;
   cloud.validate();
   loaded.description = points.description + "\n" + surfels.summary();
   return loaded;

@@ -12,13 +12,16 @@ namespace sss::cli {
 struct LoadedCloud {
   SurfelCloud cloud;        // scene units, validated; radius = mean point spacing
   std::string description;  // what was read and what was dropped
+  std::size_t isolated = 0;  // points left out as isolated
+  double largest_isolation = 0.0;
 };
 
 // mesh_samples > 0 samples that many points on a PLY mesh's surface; memory_cap (bytes, 0:
 // the loader's default) bounds what the file may claim. Throws sss::InputError naming the
 // file and what is wrong (unreadable, unknown extension, a header that claims more than the
 // file holds or the cap allows, no points, no finite points, too few points for normals).
+// isolation_ratio > 0 leaves out the points isolated above it (sssPclSurfels.h), 0 keeps them.
 LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples = 0,
-                       std::size_t memory_cap = 0);
+                       std::size_t memory_cap = 0, double isolation_ratio = 5.0);
 
 }  // namespace sss::cli

@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "stopwatch.h"
+#include "view_fit.h"
 
 namespace sss::cli {
 
@@ -102,8 +103,12 @@ void TranslucentScene::set_material(const Material& m) {
   material->SetMillimetresPerUnit(m.mm_per_unit);
 }
 
-void TranslucentScene::aim_camera(const Eigen::Vector3d& centre, const Eigen::Vector3d& view_dir,
-                                  const Eigen::Vector3d& up, bool orthographic) {
+void TranslucentScene::aim_camera(const std::vector<Eigen::Vector3d>& points,
+                                  const Eigen::Vector3d& view_dir, const Eigen::Vector3d& up,
+                                  bool orthographic, bool fit_all) {
+  Bounds bounds;
+  for (const Eigen::Vector3d& p : points) bounds.extend(p);
+  const Eigen::Vector3d centre = bounds.center();
   vtkCamera* camera = renderer->GetActiveCamera();
   const Eigen::Vector3d v = view_dir.normalized();
   camera->SetFocalPoint(centre.data());
@@ -112,6 +117,27 @@ void TranslucentScene::aim_camera(const Eigen::Vector3d& centre, const Eigen::Ve
   camera->SetParallelProjection(orthographic);
   renderer->ResetCamera();
   camera->OrthogonalizeViewUp();
+  if (!fit_all) frame_points(renderer, points);
+}
+
+void frame_points(vtkRenderer* renderer, const std::vector<Eigen::Vector3d>& points) {
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double direction[3], up[3];
+  camera->GetDirectionOfProjection(direction);
+  camera->GetViewUp(up);
+  ViewFitRequest request;
+  request.view_dir = -Eigen::Vector3d(direction[0], direction[1], direction[2]);
+  request.up = Eigen::Vector3d(up[0], up[1], up[2]);
+  request.view_angle_degrees = camera->GetViewAngle();
+  request.orthographic = camera->GetParallelProjection() != 0;
+  const int* size = renderer->GetSize();
+  if (size[0] > 0 && size[1] > 0) request.aspect = static_cast<double>(size[0]) / size[1];
+  const ViewFit fit = fit_view(points, request);
+  camera->SetFocalPoint(fit.focal_point.data());
+  camera->SetPosition(fit.position.data());
+  camera->SetViewUp(up);
+  camera->SetParallelScale(fit.parallel_scale);
+  renderer->ResetCameraClippingRange();
 }
 
 double time_light_static(TranslucentScene& scene, int frames) {

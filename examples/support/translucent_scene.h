@@ -45,14 +45,20 @@ struct TranslucentScene {
   TranslucentScene(vtkRenderWindow* window, const SurfelCloud& cloud, const Material& m,
                    const std::vector<Light>& lights);
   void set_material(const Material& m);
-  // Camera at the bounds centre looking back along `view_dir`, fitted to the cloud.
-  void aim_camera(const Eigen::Vector3d& centre, const Eigen::Vector3d& view_dir,
-                  const Eigen::Vector3d& up, bool orthographic);
+  // Camera looking back along `view_dir`; `fit_all`: at the bounds centre, fitted to every
+  // point (vtkRenderer::ResetCamera); otherwise framing 99 % of the points (frame_points).
+  void aim_camera(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& view_dir,
+                  const Eigen::Vector3d& up, bool orthographic, bool fit_all = false);
 };
 
 // Mean seconds per frame: the camera orbiting (light static), the first light turning about
 // the view's z axis (steps 1-2 every frame), and plain VTK points of the same cloud (vertex
 // cells, point size 2, the same camera and window).
+// The renderer's camera, looking along its direction with its up and view angle, moved (and
+// its orthographic scale set) so that its frame holds 99 % of `points`, centred on them
+// (core/view_fit.h); then its clipping range reset.
+void frame_points(vtkRenderer* renderer, const std::vector<Eigen::Vector3d>& points);
+
 double time_light_static(TranslucentScene& scene, int frames);
 double time_light_moving(TranslucentScene& scene, int frames);
 double time_plain_points(TranslucentScene& scene, int frames);

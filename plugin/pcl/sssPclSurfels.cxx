@@ -14,6 +14,8 @@
 #include <cmath>
 #include <vector>
 
+#include "isolated_points.h"
+
 namespace sss {
 namespace {
 
@@ -85,17 +87,33 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
   s.input_points = cloud.size();
   XyzCloud::Ptr xyz(new XyzCloud);
   std::vector<std::size_t> source;  // input index of each finite point
-  xyz->reserve(cloud.size());
+  std::vector<Eigen::Vector3d> finite;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const PointT& p = cloud[i];
     if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))) continue;
-    xyz->push_back(pcl::PointXYZ(p.x, p.y, p.z));
+    finite.emplace_back(p.x, p.y, p.z);
     source.push_back(i);
   }
-  s.nonfinite_points = cloud.size() - xyz->size();
-  if (xyz->empty())
+  s.nonfinite_points = cloud.size() - finite.size();
+  if (finite.empty())
     throw InputError("no point has a finite position (" + std::to_string(cloud.size()) +
                      " points, all NaN or infinite)");
+  IsolationSettings isolation;
+  isolation.enabled = options.drop_isolated;
+  isolation.neighbours = options.isolation_neighbours;
+  isolation.ratio = options.isolation_ratio;
+  IsolationReport isolated;
+  const std::vector<bool> on_surface = find_surface_points(finite, isolation, &isolated);
+  s.isolated_points = isolated.isolated;
+  s.largest_isolation = isolated.largest_ratio;
+  xyz->reserve(finite.size() - isolated.isolated);
+  std::size_t kept_finite = 0;
+  for (std::size_t k = 0; k < finite.size(); ++k) {
+    if (!on_surface[k]) continue;
+    xyz->push_back(pcl::PointXYZ(cloud[source[k]].x, cloud[source[k]].y, cloud[source[k]].z));
+    source[kept_finite++] = source[k];
+  }
+  source.resize(kept_finite);
 
   pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
   tree->setInputCloud(xyz);
@@ -190,6 +208,7 @@ std::string Surfels::summary() const {
   text += estimated_normals ? ", normals estimated" : ", normals given";
   if (has_colours) text += ", colours as albedo";
   if (nonfinite_points) text += ", " + std::to_string(nonfinite_points) + " non-finite dropped";
+  if (isolated_points) text += ", " + std::to_string(isolated_points) + " isolated dropped";
   if (points_without_normal)
     text += ", " + std::to_string(points_without_normal) + " without a normal dropped";
   return text;

@@ -1,4 +1,5 @@
-// A PCL cloud as surfels for vtkSurfelMapper: finite points, unit normals (kept, or estimated
+// A PCL cloud as surfels for vtkSurfelMapper: finite points that stand on a surface (isolated
+// ones left out: core/isolated_points.h), unit normals (kept, or estimated
 // with NormalEstimationOMP over a neighbourhood taken from the spacing found with PCL's
 // kd-tree), and colours kept as per-point albedo. The disc radius is the mapper's: the one
 // that closes the surface (vtkSurfelMapper::SetCoverageTarget).
@@ -32,6 +33,12 @@ struct SurfelOptions {
   double normal_radius = 0.0;
   double normal_radius_spacings = 3.0;
   int normal_neighbours = 16;
+  // Points whose mean distance to their isolation_neighbours nearest exceeds isolation_ratio
+  // times the median of that mean among those neighbours are left out (stray returns, flying
+  // pixels): their discs would be huge and would shade and light real surface.
+  bool drop_isolated = true;
+  int isolation_neighbours = 16;
+  double isolation_ratio = 5.0;
 };
 
 struct Surfels {
@@ -44,11 +51,14 @@ struct Surfels {
   std::size_t input_points = 0;
   std::size_t nonfinite_points = 0;      // NaN or infinite position (organised clouds' holes)
   std::size_t points_without_normal = 0;  // no usable normal given or estimated
+  std::size_t isolated_points = 0;        // left out as isolated (SurfelOptions::drop_isolated)
+  double largest_isolation = 0.0;         // the largest isolation ratio among the finite points
   std::size_t size() const;
   std::string summary() const;
 };
 
-// Throws InputError naming what is wrong: no finite point, too few points for normals, all
+// Throws InputError naming what is wrong (std::invalid_argument for bad isolation settings):
+// no finite point, too few points for normals, all
 // points at one place. Normals are kept when the point type has them and any of them is
 // finite and non-zero; otherwise estimated. Instantiated for PointXYZ, PointNormal,
 // PointXYZRGB, PointXYZRGBNormal and PointSurfel.
