@@ -31,31 +31,16 @@ void fit_axis(const std::vector<double>& a, const std::vector<double>& behind, d
   distance = 0.5 * (R + L);
 }
 
-}  // namespace
+struct Axes {
+  Eigen::Vector3d u, v, w;  // image right, image up, towards the camera
+};
 
-ViewFit fit_view(const std::vector<Eigen::Vector3d>& points, const ViewFitRequest& request) {
-  if (points.empty()) throw std::invalid_argument("fit_view: no points");
-  if (!(request.fraction > 0.0 && request.fraction <= 1.0))
-    throw std::invalid_argument("fit_view: the fraction must be in (0, 1]");
-  if (!(request.view_angle_degrees > 0.0 && request.view_angle_degrees < 180.0))
-    throw std::invalid_argument("fit_view: the view angle must be in (0, 180) degrees");
-  if (!(request.view_dir.norm() > 0.0))
-    throw std::invalid_argument("fit_view: the view direction has zero length");
-  const Eigen::Vector3d w = request.view_dir.normalized();
-  const Eigen::Vector3d side = request.up.cross(w);
-  if (!(side.norm() > 1e-9 * request.up.norm()))
-    throw std::invalid_argument("fit_view: the view direction runs along the up vector");
-  const Eigen::Vector3d u = side.normalized(), v = w.cross(u);
-
-  // Half the fraction left out on each side of each axis, at most 64 k points looked at.
-  const double inside = 1.0 - 0.5 * (1.0 - request.fraction);
-  const std::size_t stride = std::max<std::size_t>(1, points.size() / 65536);
-  std::vector<double> a, b, c;
-  for (std::size_t i = 0; i < points.size(); i += stride) {
-    a.push_back(u.dot(points[i]));
-    b.push_back(v.dot(points[i]));
-    c.push_back(w.dot(points[i]));
-  }
+// The frame holding `inside` of the points along each side of each axis (a, b, c: their
+// coordinates along u, v, w).
+ViewFit frame(const std::vector<double>& a, const std::vector<double>& b,
+              const std::vector<double>& c, const Axes& axes, const ViewFitRequest& request,
+              double inside) {
+  const Eigen::Vector3d &u = axes.u, &v = axes.v, &w = axes.w;
   std::vector<double> sorted = c;
   const double front = quantile(sorted, inside);
   const double middle = quantile(sorted, 0.5);
@@ -89,6 +74,45 @@ ViewFit fit_view(const std::vector<Eigen::Vector3d>& points, const ViewFitReques
   fit.focal_point = cu * u + cv * v + std::min(middle, front) * w;
   if ((fit.position - fit.focal_point).norm() <= 0.0) fit.focal_point = fit.position - w;
   return fit;
+}
+
+// How large the frame is: its orthographic scale, or the distance from the camera to the
+// points' median depth.
+double scale_of(const ViewFit& fit, const ViewFitRequest& request) {
+  return request.orthographic ? fit.parallel_scale : (fit.position - fit.focal_point).norm();
+}
+
+}  // namespace
+
+ViewFit fit_view(const std::vector<Eigen::Vector3d>& points, const ViewFitRequest& request) {
+  if (points.empty()) throw std::invalid_argument("fit_view: no points");
+  if (!(request.fraction > 0.0 && request.fraction <= 1.0))
+    throw std::invalid_argument("fit_view: the fraction must be in (0, 1]");
+  if (!(request.view_angle_degrees > 0.0 && request.view_angle_degrees < 180.0))
+    throw std::invalid_argument("fit_view: the view angle must be in (0, 180) degrees");
+  if (!(request.view_dir.norm() > 0.0))
+    throw std::invalid_argument("fit_view: the view direction has zero length");
+  const Eigen::Vector3d w = request.view_dir.normalized();
+  const Eigen::Vector3d side = request.up.cross(w);
+  if (!(side.norm() > 1e-9 * request.up.norm()))
+    throw std::invalid_argument("fit_view: the view direction runs along the up vector");
+  const Eigen::Vector3d u = side.normalized(), v = w.cross(u);
+
+  // At most 64 k points looked at.
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / 65536);
+  std::vector<double> a, b, c;
+  for (std::size_t i = 0; i < points.size(); i += stride) {
+    a.push_back(u.dot(points[i]));
+    b.push_back(v.dot(points[i]));
+    c.push_back(w.dot(points[i]));
+  }
+  const Axes axes{u, v, w};
+  const ViewFit whole = frame(a, b, c, axes, request, 1.0);
+  if (request.fraction >= 1.0) return whole;
+  // Half the fraction left out on each side of each axis.
+  const ViewFit robust = frame(a, b, c, axes, request, 1.0 - 0.5 * (1.0 - request.fraction));
+  return scale_of(whole, request) <= request.whole_tolerance * scale_of(robust, request) ? whole
+                                                                                       : robust;
 }
 
 }  // namespace sss

@@ -84,6 +84,30 @@ TEST(ViewFit, AllPointsWithFractionOne) {
   EXPECT_GT(largest, 0.999);
 }
 
+TEST(ViewFit, WholeObjectIsNotCropped) {
+  // A closed object without strays: the frame of every point is barely farther than that of
+  // 99 % of them, so every point is framed.
+  std::mt19937 rng(9);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 20000; ++i) {
+    const Eigen::Vector3d g(gauss(rng), gauss(rng), gauss(rng));
+    points.push_back(Eigen::Vector3d(30.0, 10.0, 10.0).cwiseProduct(g.normalized()));
+  }
+  for (const bool orthographic : {false, true}) {
+    ViewFitRequest request;
+    request.view_dir = Eigen::Vector3d(0, -1, 0.6);
+    request.up = Eigen::Vector3d(0, 0, 1);
+    request.orthographic = orthographic;
+    const ViewFit fit = fit_view(points, request);
+    double largest = 0.0;
+    for (const Eigen::Vector3d& p : points)
+      largest = std::max(largest, project(fit, request, p).cwiseAbs().maxCoeff());
+    EXPECT_LE(largest, 1.0 - 0.99 * request.margin) << (orthographic ? "orthographic" : "perspective");
+    EXPECT_GT(largest, 0.9);
+  }
+}
+
 TEST(ViewFit, Refusals) {
   ViewFitRequest request;
   EXPECT_THROW(fit_view({}, request), std::invalid_argument);
