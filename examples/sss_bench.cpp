@@ -53,7 +53,7 @@ using sss::cli::TranslucentScene;
 using sss::bench::kColumns;
 using sss::bench::Row;
 
-const char* kUsage = R"(usage: sss_bench [CLOUD.pcd|.ply|.ply.gz ...] [options]
+const char* kUsage = R"(usage: sss_bench [CLOUD.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc ...] [options]
 
 Speed against error of the real-time path, in one run: a sweep of settings per cloud and
 material, plain VTK points as the baseline, the CPU reference per point (cached), and a scale

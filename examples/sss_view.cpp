@@ -28,7 +28,7 @@ namespace {
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
-const char* kUsage = R"(usage: sss_view [INPUT.pcd|.ply|.ply.gz] [options]
+const char* kUsage = R"(usage: sss_view [INPUT.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc] [options]
 
 Shows INPUT (default: a procedural torus, 30 mm across its tube ring) translucent in a
 PCLVisualizer window. Needs an X display (or Xvfb).
@@ -41,7 +41,7 @@ options (default in brackets)
                        light or material changes (balanced: the pass's defaults; interactive
                        coarser and faster, accurate finer and slower; costs and errors of
                        each in docs/benchmark/bench.md) [balanced]
-  --samples N          sample N points on a PLY mesh's surface instead of its vertices [0]
+  --samples N          sample N points on a PLY or OBJ mesh's surface instead of its vertices [0]
   --memory-cap MIB     largest memory the file or --samples may claim [half the physical memory]
   --isolated R|keep    leave out points whose mean distance to their 16 nearest exceeds R
                        times that of those neighbours (stray returns, flying pixels) [5]

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <tuple>
 
 #include "scan_io.h"
 #include "sssPclLoading.h"
@@ -245,6 +246,61 @@ TEST_F(PclGlue, MeshSamplingIsUniformOnTheSurface) {
   EXPECT_NEAR(static_cast<double>(upper), 5000.0, 4 * 61.0);
 }
 
+// A tetrahedron's corners (one at the origin) and the unit cube in quads, wound outward.
+const char* const kTetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+const char* const kCube =
+  "# a cube\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+  "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf -5 -1 -2 -6\nf 4 1 5 8\n";
+
+TEST_F(PclGlue, ObjMeshVerticesAndSamples) {
+  // Normals from the faces, area-weighted, outward: the corner's diagonal and the three axes;
+  // vn given per corner (v/vt/vn, v//vn, relative indices) kept, normalised; a vertex given two
+  // different vn (flat shading): all from the faces.
+  const Eigen::Vector3f diagonal = Eigen::Vector3f::Ones().normalized(),
+                        x = Eigen::Vector3f::UnitX(), y = Eigen::Vector3f::UnitY(),
+                        z = Eigen::Vector3f::UnitZ();
+  const std::tuple<std::string, std::string, std::vector<Eigen::Vector3f>, std::string> meshes[] = {
+    {"faces.obj", "o tet\ns off\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", {-diagonal, x, y, z},
+     "OBJ mesh vertices, normals from 4 faces, 4 points, normals"},
+    {"given.obj", "vt 0 0\nvn 0 0 2\nvn 0 3 0\nvn 4 0 0\nvn 1 1 1\nf -4//-4 -2//-2 -3//-3\n"
+                  "f 1/1/1 2/1/2 4/1/4\nf 1//1 4//4 3//3\n", {z, y, x, diagonal},
+     "OBJ mesh vertices, 4 points, normals"},
+    {"flat.obj", "vn 0 0 1\nvn 0 1 0\nf 1//1 3//1 2//1\nf 1//2 2//2 4//2\nf 1 4 3\nf 2 3 4\n",
+     {-diagonal, x, y, z}, "normals from 4 faces"}};
+  for (const auto& [name, faces, normals, description] : meshes) {
+    std::ofstream(file(name)) << kTetrahedron << faces;
+    const auto mesh = sss::loadPointCloud<pcl::PointNormal>(file(name));
+    ASSERT_EQ(mesh.cloud->size(), 4u) << name;
+    for (int i = 0; i < 4; ++i)
+      EXPECT_LT(((*mesh.cloud)[i].getNormalVector3fMap() - normals[i]).norm(), 1e-6) << name << i;
+    EXPECT_NE(mesh.description.find(description), std::string::npos) << mesh.description;
+  }
+
+  // Quads, fanned: each corner's normal points out of all three faces it is on.
+  std::ofstream(file("cube.obj")) << kCube;
+  const auto cube = sss::loadPointCloud<pcl::PointNormal>(file("cube.obj"));
+  for (const auto& p : *cube.cloud) {
+    const Eigen::Vector3f outward = p.getVector3fMap() - Eigen::Vector3f::Constant(0.5f);
+    EXPECT_TRUE((p.getNormalVector3fMap().array() * outward.array() > 0.1f).all()) << p;
+    EXPECT_NEAR(p.getNormalVector3fMap().norm(), 1.0f, 1e-6) << p;
+  }
+  sss::LoadOptions sampled;
+  sampled.mesh_samples = 3000;
+  const auto samples = sss::loadPointCloud<pcl::PointNormal>(file("cube.obj"), sampled);
+  ASSERT_EQ(samples.cloud->size(), 3000u);
+  EXPECT_NE(samples.description.find("OBJ mesh, 6 faces sampled"), std::string::npos);
+  int per_face[6] = {};
+  for (const auto& p : *samples.cloud) {  // on a face, inside it, with its outward normal
+    const Eigen::Vector3f at = p.getVector3fMap(), n = p.getNormalVector3fMap();
+    int axis;
+    ASSERT_NEAR(n.cwiseAbs().maxCoeff(&axis), 1.0f, 1e-6) << p;
+    ASSERT_NEAR(at[axis], n[axis] > 0 ? 1.0f : 0.0f, 1e-6) << p;
+    ASSERT_TRUE((at.array() >= -1e-6f).all() && (at.array() <= 1 + 1e-6f).all()) << p;
+    ++per_face[2 * axis + (n[axis] > 0)];
+  }
+  for (int count : per_face) EXPECT_NEAR(count, 500, 4 * 20.4);  // binomial sd
+}
+
 void expect_input_error(const std::function<void()>& load, const std::string& words) {
   try {
     load();
@@ -257,9 +313,9 @@ void expect_input_error(const std::function<void()>& load, const std::string& wo
 TEST_F(PclGlue, BadInputGivesOneClearError) {
   expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("absent.pcd")); },
                      "absent.pcd: cannot be opened");
-  std::ofstream(file("cloud.xyz")) << "1 2 3\n";
-  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("cloud.xyz")); },
-                     "unknown extension");
+  std::ofstream(file("cloud.las")) << "1 2 3\n";
+  expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("cloud.las")); },
+                     "unknown extension (use .pcd, .ply, .ply.gz, .obj, .xyz, .txt, .csv or .asc)");
   std::ofstream(file("garbage.pcd")) << "this is not a point cloud\n";
   expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file("garbage.pcd")); },
                      "garbage.pcd: not a readable PCD file");
@@ -309,6 +365,75 @@ TEST_F(PclGlue, BadInputGivesOneClearError) {
 
   pcl::PointCloud<pcl::PointXYZ> one_place(20, 1, pcl::PointXYZ(1, 2, 3));
   expect_input_error([&] { sss::makeSurfels(one_place); }, "lie at one place");
+}
+
+// ASCII point lists: columns by a header or by their count, separators, comments, colours as
+// 0-255 or 0-1, georeferenced coordinates; an OBJ of points.
+TEST_F(PclGlue, PointListsReadTheirColumns) {
+  struct Case {
+    std::string name, text;
+    float x[2][3], n[2][3];  // n all 0: no normals
+    int rgb[2][3];           // all 0: no colours
+  };
+  const Case cases[] = {
+    {"a.xyz", "# x, y, z of a scan\n1.5 -2 3e2\n4\t5 6\n", {{1.5f, -2, 300}, {4, 5, 6}}, {}, {}},
+    {"points.obj", "v 1.5 -2 3e2\nv 4 5 6 1\n\nvt 0 1\n", {{1.5f, -2, 300}, {4, 5, 6}}, {}, {}},
+    {"unit.txt", "0 0 0 0 0 1\n1 0 0 0.6 0.8 0\n", {{0, 0, 0}, {1, 0, 0}},
+     {{0, 0, 1}, {0.6f, 0.8f, 0}}, {}},
+    {"rgb.csv", "0,0,0,255,128,0\n1, 2, 3, 10, 20, 30\n", {{0, 0, 0}, {1, 2, 3}}, {},
+     {{255, 128, 0}, {10, 20, 30}}},
+    {"unit_rgb.asc", "0;0;0;1;0.5;0\n1;0;0;0.2;0.2;0.2\n", {{0, 0, 0}, {1, 0, 0}}, {},
+     {{255, 128, 0}, {51, 51, 51}}},
+    {"pts.txt", "2\n0 0 0 -100 255 128 0\n1 0 0 5 10 20 30\n", {{0, 0, 0}, {1, 0, 0}}, {},
+     {{255, 128, 0}, {10, 20, 30}}},
+    {"cc.txt", "//X,Y,Z,R,G,B\n1,2,3,1,0,0\n4,5,6,0,1,0\n",  // unit vectors, but named colours
+     {{1, 2, 3}, {4, 5, 6}}, {}, {{255, 0, 0}, {0, 255, 0}}},
+    {"nine.xyz", "1 2 3 255 0 0 0 0 1\n4 5 6 0 255 0 1 0 0\n", {{1, 2, 3}, {4, 5, 6}},
+     {{0, 0, 1}, {1, 0, 0}}, {{255, 0, 0}, {0, 255, 0}}},
+    {"nine_normals_first.xyz", "1 2 3 0 0 1 255 0 0\n4 5 6 1 0 0 0 255 0\n",
+     {{1, 2, 3}, {4, 5, 6}}, {{0, 0, 1}, {1, 0, 0}}, {{255, 0, 0}, {0, 255, 0}}},
+    {"named.txt",
+     "# scan of 2 points\n\nX\tY\tZ\tIntensity\tNX\tNY\tNZ\n// a comment\n"
+     "1 2 3 0.5 0 1 0\n# another\n4 5 6 7 0 0 -1\n",
+     {{1, 2, 3}, {4, 5, 6}}, {{0, 1, 0}, {0, 0, -1}}, {}},
+    {"utm.xyz", "500000.25 4000000.5 123.125\r\n500001 4000001 124\r\n",
+     {{500000.25f, 4000000.5f, 123.125f}, {500001, 4000001, 124}}, {}, {}}};
+  for (const Case& c : cases) {
+    std::ofstream(file(c.name)) << c.text;
+    const auto loaded = sss::loadPointCloud<pcl::PointXYZRGBNormal>(file(c.name));
+    ASSERT_EQ(loaded.cloud->size(), 2u) << c.name;
+    EXPECT_EQ(loaded.has_normals, Eigen::Vector3f::Map(c.n[0]).any()) << c.name;
+    EXPECT_EQ(loaded.has_colours, Eigen::Vector3i::Map(c.rgb[0]).any()) << c.name;
+    for (int i = 0; i < 2; ++i) {  // normals and colours the file lacks stay 0
+      const auto& p = (*loaded.cloud)[i];
+      EXPECT_EQ(p.getVector3fMap(), Eigen::Vector3f::Map(c.x[i])) << c.name;
+      EXPECT_EQ(p.getNormalVector3fMap(), Eigen::Vector3f::Map(c.n[i])) << c.name;
+      EXPECT_EQ(Eigen::Vector3i(p.r, p.g, p.b), Eigen::Vector3i::Map(c.rgb[i])) << c.name;
+    }
+  }
+}
+
+// Bad OBJ and ASCII files: one message naming the file and what is wrong (test_render_input too).
+TEST_F(PclGlue, BadObjAndAsciiFilesGiveOneClearError) {
+  const sss::LoadOptions sampled{10}, capped{0, 1, 1 << 10};  // 10 samples; a cap of 1 KiB
+  const std::string obj = std::string(kTetrahedron), unreadable = "not a readable OBJ file (line ";
+  const std::tuple<std::string, std::string, std::string, sss::LoadOptions> cases[] = {
+    {"a.obj", obj + "f 1 2 9\n",
+     unreadable + "5, vertex index 9 names none of the 4 vertices before it)", {}},
+    {"b.obj", obj + "vn 0 0 1\nf 1//1 2//1 3//2\n",
+     unreadable + "6, normal index 2 names none of the 1 normals before it)", {}},
+    {"c.obj", "# nothing\no thing\n", "the file has no points", {}},
+    {"d.obj", "v 0 0 0\n", "mesh sampling asked for, but the OBJ file has no faces", sampled},
+    {"e.obj", kCube, "its lines hold 8 vertices, 0 normals, 6 faces, which would need 1.5 KiB in "
+                     "memory, over the memory cap of 1.0 KiB", capped},
+    {"b.xyz", "", "the file has no points", {}},
+    {"c.csv", std::string(100, '\n'), "its 100 lines (a point each at most), which would need "
+                                      "14 KiB in memory, over the memory cap of 1.0 KiB", capped}};
+  for (const auto& [name, text, words, options] : cases) {
+    std::ofstream(file(name)) << text;
+    expect_input_error([&] { sss::loadPointCloud<pcl::PointXYZ>(file(name), options); },
+                       file(name) + ": " + words);
+  }
 }
 
 // The text of a file, with `from` replaced by `to` once.

@@ -11,6 +11,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 namespace {
 
@@ -51,8 +52,9 @@ void expect_refused(const std::string& input, const std::string& words) {
 
 TEST(RenderInput, BadInputGivesOneMessageNonZeroExitAndNoFile) {
   expect_refused("absent.pcd", "absent.pcd: cannot be opened");
-  std::ofstream("points.xyz") << "1 2 3\n";
-  expect_refused("points.xyz", "unknown extension");
+  std::ofstream("points.las") << "1 2 3\n";
+  expect_refused("points.las", "unknown extension (use .pcd, .ply, .ply.gz, .obj, .xyz, .txt, "
+                               ".csv or .asc)");
   std::ofstream("empty.pcd")
     << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 0\nHEIGHT 1\n"
        "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 0\nDATA ascii\n";
@@ -83,6 +85,31 @@ TEST(RenderInput, BadInputGivesOneMessageNonZeroExitAndNoFile) {
     << "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
        "property float y\nproperty float z\nend_header\n";
   expect_refused("billion.ply", "billion.ply: its header claims 2000000000 vertices");
+}
+
+// OBJ and ASCII point lists: the line that is wrong and why.
+TEST(RenderInput, BadObjAndAsciiLinesAreNamed) {
+  const std::string obj = ": not a readable OBJ file (line ";
+  const std::tuple<std::string, std::string, std::string> cases[] = {
+    {"garbage.obj", "this is garbage\n", obj + "1, 'this is garbage' is not an OBJ line)"},
+    {"forward.obj", "f 1 2 3\nv 0 0 0\n", obj + "1, vertex index 1 names none of the 0"},
+    {"word.obj", "v 0 0 0\nv 1 x 0\n", obj + "2, 'x' is not a number)"},
+    {"short.obj", "v 0 0\n", obj + "1, 'v 0 0' has 2 numbers, not 3 to 6)"},
+    {"corners.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", obj + "4, a face needs 3 corners)"},
+    {"columns.xyz", "1 2 3\n\n4 5\n", ": line 3: 2 columns, not 3 as line 1 has"},
+    {"header.txt", "x y z r g b\n1 2 3 4 5 6\n1 2 3\n",
+     ": line 3: 3 columns, not 6 as its header names"},
+    {"word.csv", "1,2,3\n4,five,6\n", ": line 2: column 2, 'five', is not a number"},
+    {"five.asc", "1 2 3 4 5\n",
+     ": line 1: 5 columns; without a header naming them, use 3 (x y z), 4, 6, 7 or 9"},
+    {"names.txt", "a b c\n1 2 3\n",
+     ": line 1: 'a b c' is not a point, a comment or a header naming x, y and z"},
+    {"late_header.xyz", "1 2 3\nx y z\n", ": line 2: 'x y z' is not a point"},
+    {"count_only.xyz", "# a comment\n12\n", ": the file has no points"}};
+  for (const auto& [name, text, message] : cases) {
+    std::ofstream(name) << text;
+    expect_refused(name, name + message);
+  }
 }
 
 // Setting names are checked before anything is loaded or drawn: a wrong one is refused with

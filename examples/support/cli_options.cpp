@@ -81,7 +81,7 @@ std::string usage() {
 real-time method after Oda et al. 2005) offscreen, to PNG (tone-mapped sRGB) and optionally
 linear radiance (PFM), per-point radiance (PLY) and JSON stats.
 
-usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
+usage: sss_render [INPUT.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc] [options]
        (no input: a procedural marble torus the project generates, in mm)
 
   --output F.png            tone-mapped sRGB image (default sss_render.png)
@@ -145,8 +145,9 @@ usage: sss_render [INPUT.pcd|INPUT.ply|INPUT.ply.gz] [options]
                             range), uniform, or per-point
   --splatting M             blended (default: overlapping discs blended with Gaussian weights)
                             or discs (hard discs)
-  --samples N               for a PLY mesh: N points sampled uniformly on its surface instead
-                            of its vertices, as pcl_mesh_sampling does (default 0: vertices)
+  --samples N               for a PLY or OBJ mesh: N points sampled uniformly on its surface
+                            instead of its vertices, as pcl_mesh_sampling does (default 0:
+                            vertices)
   --isolated RATIO|keep     leave out points whose mean distance to their 16 nearest exceeds
                             RATIO times that of those neighbours (default 5: stray returns,
                             flying pixels; the shared scans' own surfaces reach 3.0); keep:

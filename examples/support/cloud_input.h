@@ -1,5 +1,6 @@
-// sss_render's input: any file the PCL glue reads (PCD, PLY, PLY.gz; a mesh's vertices or
-// samples of its surface) as a validated surfel cloud for the CPU reference and the GPU path.
+// sss_render's input: any file the PCL glue reads (PCD, PLY, PLY.gz, OBJ, ASCII point lists; a
+// mesh's vertices or samples of its surface) as a validated surfel cloud for the CPU reference
+// and the GPU path.
 #pragma once
 
 #include <cstddef>
@@ -16,10 +17,11 @@ struct LoadedCloud {
   double largest_isolation = 0.0;
 };
 
-// mesh_samples > 0 samples that many points on a PLY mesh's surface; memory_cap (bytes, 0:
-// the loader's default) bounds what the file may claim. Throws sss::InputError naming the
+// mesh_samples > 0 samples that many points on a PLY or OBJ mesh's surface; memory_cap (bytes,
+// 0: the loader's default) bounds what the file may claim. Throws sss::InputError naming the
 // file and what is wrong (unreadable, unknown extension, a header that claims more than the
-// file holds or the cap allows, no points, no finite points, too few points for normals).
+// file holds or the cap allows, a malformed line, no points, no finite points, too few points
+// for normals).
 // isolation_ratio > 0 leaves out the points isolated above it (sssPclSurfels.h), 0 keeps them.
 LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples = 0,
                        std::size_t memory_cap = 0, double isolation_ratio = 5.0);

@@ -28,6 +28,15 @@ constexpr std::size_t kMaxHeaderLineBytes = 1 << 16;
 // indices on the heap; other elements, one small record each.
 constexpr long double kFaceBytes = 56;
 constexpr long double kOtherElementBytes = 32;
+// An OBJ vertex: its position, the normal it is given and the clouds made of them; a vn line's
+// normal; a face corner past the third. A line of an ASCII point list: its values as parsed,
+// the cloud and PCL's blob of them.
+constexpr long double kObjVertexBytes = 128;
+constexpr long double kObjNormalBytes = 12;
+constexpr long double kCornerBytes = 4;
+constexpr long double kPointLineBytes = 132;
+// Text formats are counted through a buffer of this size.
+constexpr std::size_t kChunkBytes = 1 << 20;
 
 [[noreturn]] void refuse(const std::string& shown, const std::string& what) {
   throw InputError(shown + ": " + what);
@@ -142,9 +151,9 @@ std::string pcd_keys_after_data(std::ifstream& in) {
 }
 
 void check_memory(const std::string& shown, const std::string& claim, long double bytes,
-                  std::size_t cap) {
+                  std::size_t cap, const char* source = "its header claims ") {
   if (bytes > static_cast<long double>(cap))
-    refuse(shown, "its header claims " + claim + ", which would need " + byteSize(bytes) +
+    refuse(shown, source + claim + ", which would need " + byteSize(bytes) +
                     " in memory, over the memory cap of " + byteSize(cap) +
                     " (LoadOptions::memory_cap, --memory-cap)");
 }
@@ -441,6 +450,77 @@ void checkPlyClaims(const std::string& shown, const std::string& path, std::size
   const std::uint64_t size = file_size(shown, path);
   check_data(shown, claim + " (" + format + ")", data, size > data_offset ? size - data_offset : 0);
   check_memory(shown, claim, memory, cap);
+}
+
+ObjCounts checkObjClaims(const std::string& shown, const std::string& path, std::size_t cap,
+                         std::size_t point_bytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) refuse(shown, "cannot be opened");
+  ObjCounts counts;
+  char key[3];
+  int key_length = 0;  // 3: longer than any key counted here
+  bool key_done = false, in_word = false;
+  std::uint64_t words = 0;  // after the key
+  const auto end_line = [&] {
+    const std::string k(key, static_cast<std::size_t>(std::min(key_length, 2)));
+    if (key_length < 3 && k == "v") ++counts.vertices;
+    if (key_length < 3 && k == "vn") ++counts.normals;
+    if (key_length < 3 && k == "f") ++counts.faces, counts.corners += words;
+    key_length = 0, key_done = false, in_word = false, words = 0;
+  };
+  std::vector<char> buffer(kChunkBytes);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const std::streamsize n = in.gcount();
+    for (std::streamsize i = 0; i < n; ++i) {
+      const char c = buffer[static_cast<std::size_t>(i)];
+      const bool space = c == ' ' || c == '\t' || c == '\r';
+      if (c == '\n') {
+        end_line();
+      } else if (!key_done) {
+        if (space && key_length > 0) key_done = true;
+        if (!space && key_length < 3) key[key_length++] = c;
+      } else if (space) {
+        in_word = false;
+      } else if (!in_word) {
+        in_word = true;
+        ++words;
+      }
+    }
+  }
+  end_line();
+  if (counts.vertices > static_cast<std::uint64_t>(INT32_MAX))
+    refuse(shown, "its lines hold " + count_of(counts.vertices, "vertices") +
+                    ", more than PCL can index");
+  const long double extra_corners =
+    counts.corners > 3 * counts.faces ? counts.corners - 3 * counts.faces : 0;
+  check_memory(shown,
+               count_of(counts.vertices, "vertices") + ", " + count_of(counts.normals, "normals") +
+                 ", " + count_of(counts.faces, "faces"),
+               counts.vertices * (kObjVertexBytes + static_cast<long double>(point_bytes)) +
+                 counts.normals * kObjNormalBytes + counts.faces * kFaceBytes +
+                 extra_corners * kCornerBytes,
+               cap, "its lines hold ");
+  return counts;
+}
+
+std::uint64_t checkPointListClaims(const std::string& shown, const std::string& path,
+                                   std::size_t cap, std::size_t point_bytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) refuse(shown, "cannot be opened");
+  std::uint64_t lines = 0;
+  char last = '\n';
+  std::vector<char> buffer(kChunkBytes);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const auto n = static_cast<std::size_t>(in.gcount());
+    lines += static_cast<std::uint64_t>(std::count(buffer.data(), buffer.data() + n, '\n'));
+    if (n > 0) last = buffer[n - 1];
+  }
+  lines += last != '\n';
+  check_memory(shown, count_of(lines, "lines") + " (a point each at most)",
+               lines * (kPointLineBytes + static_cast<long double>(point_bytes)), cap, "its ");
+  return lines;
 }
 
 }  // namespace sss

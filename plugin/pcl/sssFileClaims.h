@@ -1,10 +1,12 @@
-// What a PCD or PLY header claims (points, fields, sizes), checked against the file and a
-// memory cap before PCL allocates anything for it. A header that promises more data than the
+// What a PCD or PLY header claims (points, fields, sizes), or the lines of a text format (OBJ,
+// ASCII point lists), checked against the file and a memory cap before anything is allocated
+// for it. A header that promises more data than the
 // file holds, more than the cap, or that is not a header PCL can parse safely, is refused
 // with one message naming the file, the claim and the size.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace sss {
@@ -26,5 +28,22 @@ void checkPcdClaims(const std::string& shown, const std::string& path, std::size
 // their length field). A mesh's faces count at least three indices each in memory.
 void checkPlyClaims(const std::string& shown, const std::string& path, std::size_t cap,
                     std::size_t point_bytes);
+
+// What an OBJ file's lines hold, counted without parsing them: v, vn and f lines, and the
+// corners of the faces (their words).
+struct ObjCounts {
+  std::uint64_t vertices = 0, normals = 0, faces = 0, corners = 0;
+};
+
+// Throw InputError when the OBJ file's lines, parsed into a mesh and a cloud of `point_bytes`
+// per vertex, would need more than `cap` bytes; else their counts.
+ObjCounts checkObjClaims(const std::string& shown, const std::string& path, std::size_t cap,
+                         std::size_t point_bytes);
+
+// Throw InputError when a text file of one point a line could hold more points than fit in
+// `cap` bytes (each line a point, held while parsed and as a cloud of `point_bytes`); else
+// the number of its lines.
+std::uint64_t checkPointListClaims(const std::string& shown, const std::string& path,
+                                   std::size_t cap, std::size_t point_bytes);
 
 }  // namespace sss

@@ -13,14 +13,18 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string_view>
 #include <unistd.h>
 
 #include <vector>
 
+#include "sssAsciiPoints.h"
 #include "sssFileClaims.h"
 #include "sssPclMeshSampling.h"
 
@@ -128,20 +132,17 @@ Blob read_pcd(const std::string& path, std::size_t cap, std::size_t point_bytes)
   return blob;
 }
 
-Blob read_ply(const std::string& shown_path, const std::string& path, const LoadOptions& options,
-              std::size_t cap, std::size_t point_bytes) {
-  checkPlyClaims(shown_path, path, cap, point_bytes);
-  pcl::PolygonMesh mesh;
-  if (pcl::io::loadPLYFile(path, mesh) < 0) throw InputError(shown_path + ": not a readable PLY file");
-  check_layout(shown_path, mesh.cloud);
-  if (std::uint64_t{mesh.cloud.width} * mesh.cloud.height == 0)  // PCL's conversions need one
-    throw InputError(shown_path + ": the file has no points");
+// A mesh read from a `format` file as its points, its vertices with their normals (the file's,
+// else from the faces), or samples of its surface.
+Blob from_mesh(const std::string& shown, pcl::PolygonMesh& mesh, const LoadOptions& options,
+               const std::string& format) {
   Blob blob;
   if (mesh.polygons.empty()) {
     if (options.mesh_samples > 0)
-      throw InputError(shown_path + ": mesh sampling asked for, but the PLY file has no faces");
+      throw InputError(shown + ": mesh sampling asked for, but the " + format +
+                       " file has no faces");
     blob.points = std::move(mesh.cloud);
-    blob.kind = "PLY points";
+    blob.kind = format + " points";
     return blob;
   }
   const bool colours = has_field(mesh.cloud, "rgb") || has_field(mesh.cloud, "rgba");
@@ -150,17 +151,18 @@ Blob read_ply(const std::string& shown_path, const std::string& path, const Load
     try {
       samples = sampleMeshSurface(mesh, options.mesh_samples, options.sampling_seed);
     } catch (const std::invalid_argument& e) {
-      throw InputError(shown_path + ": " + e.what());
+      throw InputError(shown + ": " + e.what());
     }
     pcl::toPCLPointCloud2(samples, blob.points);
-    blob.kind = "PLY mesh, " + std::to_string(mesh.polygons.size()) + " faces sampled";
+    blob.kind = format + " mesh, " + std::to_string(mesh.polygons.size()) + " faces sampled";
   } else if (has_field(mesh.cloud, "normal_x")) {
     blob.points = std::move(mesh.cloud);
-    blob.kind = "PLY mesh vertices";
+    blob.kind = format + " mesh vertices";
     return blob;
   } else {
     pcl::toPCLPointCloud2(meshVerticesWithNormals(mesh), blob.points);
-    blob.kind = "PLY mesh vertices, normals from " + std::to_string(mesh.polygons.size()) + " faces";
+    blob.kind =
+      format + " mesh vertices, normals from " + std::to_string(mesh.polygons.size()) + " faces";
   }
   if (!colours) {  // the conversion above added an rgb field; drop it again
     auto& fields = blob.points.fields;
@@ -168,6 +170,137 @@ Blob read_ply(const std::string& shown_path, const std::string& path, const Load
                                 [](const pcl::PCLPointField& f) { return f.name == "rgb"; }),
                  fields.end());
   }
+  return blob;
+}
+
+Blob read_ply(const std::string& shown_path, const std::string& path, const LoadOptions& options,
+              std::size_t cap, std::size_t point_bytes) {
+  checkPlyClaims(shown_path, path, cap, point_bytes);
+  pcl::PolygonMesh mesh;
+  if (pcl::io::loadPLYFile(path, mesh) < 0) throw InputError(shown_path + ": not a readable PLY file");
+  check_layout(shown_path, mesh.cloud);
+  if (std::uint64_t{mesh.cloud.width} * mesh.cloud.height == 0)  // PCL's conversions need one
+    throw InputError(shown_path + ": the file has no points");
+  return from_mesh(shown_path, mesh, options, "PLY");
+}
+
+// OBJ is parsed here: pcl::io::loadOBJFile writes past its buffer when a file has more vn than
+// v lines, reads past a short v line, leaves garbage indices for a face word that is not a
+// number, checks no index and opens any file an mtllib line names.
+Blob read_obj(const std::string& path, const LoadOptions& options, std::size_t cap,
+              std::size_t point_bytes) {
+  const ObjCounts counts = checkObjClaims(path, path, cap, point_bytes);
+  std::vector<Eigen::Vector3f> positions, normals;
+  positions.reserve(counts.vertices);
+  normals.reserve(counts.normals);
+  constexpr std::int64_t kNone = -1, kSeveral = -2;
+  std::vector<std::int64_t> given;  // per vertex: the vn its corners name, kNone or kSeveral
+  given.reserve(counts.vertices);
+  pcl::PolygonMesh mesh;
+  mesh.polygons.reserve(counts.faces);
+  TextLines text(path, path);
+  std::vector<std::string_view> words;
+  const auto refuse = [&](const std::string& what) {
+    throw InputError(path + ": not a readable OBJ file (line " + std::to_string(text.number()) +
+                     ", " + what + ")");
+  };
+  const auto quoted = [](std::string_view word) {
+    return "'" + std::string(word.substr(0, 40)) + "'";
+  };
+  // x y z after the key, and up to `more` numbers after them that are not kept (v's w or colour).
+  const auto xyz = [&](std::string_view line, std::size_t more) {
+    if (words.size() < 4 || words.size() > 4 + more)
+      refuse(quoted(line) + " has " + std::to_string(words.size() - 1) + " numbers, not 3" +
+             (more ? " to " + std::to_string(3 + more) : ""));
+    double value[3];
+    for (std::size_t k = 1; k < words.size(); ++k)
+      if (double v; parseNumber(words[k], v)) {
+        if (k <= 3) value[k - 1] = v;
+      } else {
+        refuse(quoted(words[k]) + " is not a number");
+      }
+    return Eigen::Vector3d(value[0], value[1], value[2]).cast<float>().eval();
+  };
+  // A face corner's index: from 1, or negative counting back from the last one read.
+  const auto index = [&](std::string_view word, std::size_t read, const std::string& what,
+                         const std::string& all) {
+    long long i = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), i);
+    if (error != std::errc() || end != word.data() + word.size())
+      refuse(quoted(word) + " is not a " + what + " index");
+    const long long at = i < 0 ? static_cast<long long>(read) + i : i - 1;
+    if (i == 0 || at < 0 || at >= static_cast<long long>(read))
+      refuse(what + " index " + std::string(word) + " names none of the " + std::to_string(read) +
+             " " + all + " before it");
+    return static_cast<std::size_t>(at);
+  };
+  static const std::string_view ignored_keys[] = {
+    "vt", "vp", "l", "p", "o", "g", "s", "mg", "usemtl", "mtllib", "maplib", "usemap", "cstype",
+    "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end",
+    "con", "lod", "shadow_obj", "trace_obj", "ctech", "stech", "bevel", "c_interp", "d_interp"};
+  for (std::string_view line; text.next(line);) {
+    splitWords(line, " \t", words);
+    if (words.empty() || words[0][0] == '#') continue;
+    if (words[0] == "v") {
+      positions.push_back(xyz(line, 3));
+      given.push_back(kNone);
+    } else if (words[0] == "vn") {
+      normals.push_back(xyz(line, 0).normalized());
+    } else if (words[0] == "f") {
+      if (words.size() < 4) refuse("a face needs 3 corners");
+      pcl::Vertices face;
+      face.vertices.reserve(words.size() - 1);
+      for (std::size_t k = 1; k < words.size(); ++k) {  // v, v/vt, v/vt/vn or v//vn
+        const std::string_view corner = words[k];
+        const std::size_t slash = corner.find('/');
+        const std::size_t second = corner.find('/', slash == corner.npos ? slash : slash + 1);
+        const std::size_t v =
+          index(corner.substr(0, slash), positions.size(), "vertex", "vertices");
+        face.vertices.push_back(static_cast<pcl::index_t>(v));
+        if (second == corner.npos) continue;
+        const std::size_t n = index(corner.substr(second + 1), normals.size(), "normal", "normals");
+        std::int64_t& g = given[v];
+        const bool same = g >= 0 && normals[static_cast<std::size_t>(g)] == normals[n];
+        g = g == kNone || same ? static_cast<std::int64_t>(n) : kSeveral;
+      }
+      mesh.polygons.push_back(std::move(face));
+    } else if (std::find(std::begin(ignored_keys), std::end(ignored_keys), words[0]) ==
+               std::end(ignored_keys)) {
+      refuse(quoted(line) + " is not an OBJ line");
+    }
+  }
+  if (positions.empty()) throw InputError(path + ": the file has no points");
+  // The file's normals: one per vertex from its corners, or without faces the i-th vn line's
+  // for the i-th vertex (as pcl::io::saveOBJFile writes them).
+  const bool by_corners = !mesh.polygons.empty() &&
+    std::all_of(given.begin(), given.end(), [](std::int64_t g) { return g >= 0; });
+  const bool by_order = mesh.polygons.empty() && normals.size() == positions.size();
+  if (by_corners || by_order) {
+    pcl::PointCloud<pcl::PointNormal> cloud;
+    cloud.resize(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      cloud[i].getVector3fMap() = positions[i];
+      cloud[i].getNormalVector3fMap() =
+        normals[by_corners ? static_cast<std::size_t>(given[i]) : i];
+    }
+    pcl::toPCLPointCloud2(cloud, mesh.cloud);
+  } else {
+    pcl::PointCloud<pcl::PointXYZ> cloud;
+    cloud.resize(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) cloud[i].getVector3fMap() = positions[i];
+    pcl::toPCLPointCloud2(cloud, mesh.cloud);
+  }
+  return from_mesh(path, mesh, options, "OBJ");
+}
+
+Blob read_ascii(const std::string& path, const LoadOptions& options, std::size_t cap,
+                std::size_t point_bytes) {
+  if (options.mesh_samples > 0)
+    throw InputError(path + ": mesh sampling asked for, but an ASCII point list has no faces");
+  AsciiPoints read = readAsciiPoints(path, cap, point_bytes);
+  Blob blob;
+  blob.points = std::move(read.points);
+  blob.kind = "ASCII points, columns " + read.columns;
   return blob;
 }
 
@@ -190,7 +323,11 @@ Blob read_any(const std::string& path, const LoadOptions& options, std::size_t p
     const InflatedCopy plain(path, ".ply", cap);
     return read_ply(path, plain.path(), options, cap, point_bytes);
   }
-  throw InputError(path + ": unknown extension (use .pcd, .ply or .ply.gz)");
+  if (ends_with(path, ".obj")) return read_obj(path, options, cap, point_bytes);
+  for (const char* ascii : {".xyz", ".txt", ".csv", ".asc"})
+    if (ends_with(path, ascii)) return read_ascii(path, options, cap, point_bytes);
+  throw InputError(path +
+                   ": unknown extension (use .pcd, .ply, .ply.gz, .obj, .xyz, .txt, .csv or .asc)");
 }
 
 }  // namespace

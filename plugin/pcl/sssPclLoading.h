@@ -1,6 +1,7 @@
 // Reading point clouds for the translucency renderer with PCL: PCD (ascii, binary,
-// binary_compressed, organised with NaN), PLY (points, or a mesh's vertices or samples of its
-// triangles) and gzip-compressed PLY.
+// binary_compressed, organised with NaN), PLY and OBJ (points, or a mesh's vertices or samples
+// of its triangles), gzip-compressed PLY, and ASCII point lists (.xyz, .txt, .csv, .asc: x y z,
+// normals and colours, named by a header or told by the column count).
 #pragma once
 
 #include <pcl/point_cloud.h>
@@ -19,8 +20,9 @@ class InputError : public std::runtime_error {
 };
 
 struct LoadOptions {
-  // PLY meshes: 0 keeps the vertices (normals from the faces when the file has none); N > 0
-  // samples N points uniformly over the triangles' area instead, as pcl_mesh_sampling does.
+  // PLY and OBJ meshes: 0 keeps the vertices (normals from the faces when the file has none);
+  // N > 0 samples N points uniformly over the triangles' area instead, as pcl_mesh_sampling
+  // does.
   std::size_t mesh_samples = 0;
   unsigned sampling_seed = 1;
   // Bytes a load may claim (PCL's data, the cloud, samples, an inflated .gz); a header that

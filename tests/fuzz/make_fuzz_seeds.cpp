@@ -1,7 +1,8 @@
 // Writes the fuzz targets' seed corpora: small clouds in every form the loader reads (PCD
 // ascii, binary and binary_compressed, organised with NaN; PLY ascii and binary, points and a
-// mesh), each prefixed by the form byte fuzz_load_cloud.cpp reads, and typical sss_render
-// argument lists for fuzz_cli_options.cpp.
+// mesh; OBJ points and meshes; ASCII point lists of each column layout), each prefixed by the
+// form byte fuzz_load_cloud.cpp reads (+5: the mesh sampled), and typical sss_render argument
+// lists for fuzz_cli_options.cpp.
 #include <pcl/PolygonMesh.h>
 #include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
@@ -14,6 +15,7 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -70,11 +72,30 @@ int main(int argc, char** argv) {
   }
   pcl::io::savePLYFile((tmp / "m.ply").string(), mesh);
   seed(load, "ply_ascii_mesh", 1, tmp / "m.ply");
-  seed(load, "ply_ascii_mesh_sampled", 4, tmp / "m.ply");
+  seed(load, "ply_ascii_mesh_sampled", 1 + 5, tmp / "m.ply");
   seed(load, "ply_gz_mesh", 2, tmp / "m.ply");
   pcl::io::savePLYFileBinary((tmp / "n.ply").string(), mesh);
   seed(load, "ply_binary_mesh", 1, tmp / "n.ply");
   fs::remove_all(tmp);
+
+  const std::vector<std::tuple<std::string, char, std::string>> texts = {
+    {"obj_points", 3, "# points\nv 0 0 0\nv 1 0 0 1\nv 0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"},
+    {"obj_tetrahedron", 3,
+     "o tet\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 -1\nvn 1 1 1\n"
+     "f 1/1/1 3/1/1 2/1/1\nf 1//2 2//2 4//2\nf -4 -1 -2\ns off\nf 2 3 4\n"},
+    {"obj_cube_sampled", 3 + 5,
+     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+     "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7 \nf 4 1 5 8\n"},
+    {"xyz", 4, "0 0 0\n1 0 0\n0 1 0\n1 1 0.5\n"},
+    {"xyz_normals", 4, "0 0 0 0 0 1\n1 0 0 0 0.6 0.8\n0 1 0 0 0 -1\n"},
+    {"csv_colours", 4, "# colours\n0,0,0,255,128,0\n1,0,0,0.5,20,30\n0,1,0,1,2,3\n"},
+    {"pts_intensity", 4, "3\n0 0 0 -12 255 128 0\n1 0 0 5 10 20 30\n0 1 0 7 1 2 3\n"},
+    {"txt_cloudcompare", 4,
+     "//X,Y,Z,R,G,B,Nx,Ny,Nz\n0;0;0;255;0;0;0;0;1\n1;0;0;0;255;0;1;0;0\n0;1;0;1;1;1;0;1;0\n"},
+    {"txt_named", 4, "x\ty\tz\tintensity\tnx\tny\tnz\r\n0 0 0 1 0 0 1\r\n1 0 0 2 0 0 1\r\n"
+                     "// a comment\r\n0 1 0 3 0 0 1\r\n"}};
+  for (const auto& [name, form, text] : texts)
+    std::ofstream(load / name, std::ios::binary) << form << text;
 
   const std::vector<std::vector<std::string>> lists = {
     {"scan.pcd", "--scale", "1000", "--material", "marble", "--light-dir", "0.3,-0.5,-1"},
