@@ -118,7 +118,9 @@ TEST(RenderInput, UnknownSettingNamesAreRefusedWithTheKnownOnes) {
   const std::pair<const char*, const char*> cases[] = {
       {"--quality fastest", "--quality: 'fastest' is not a quality preset: use interactive, "
                             "balanced or accurate"},
-      {"--strategy fast", "--strategy: 'fast' is not near-far or paper"}};
+      {"--strategy fast", "--strategy: 'fast' is not near-far or paper"},
+      {"--fit sideways", "--fit: needs surface or all, not 'sideways'"},
+      {"--isolated 1", "--isolated: needs a ratio above 1 (up to 1e6) or keep"}};
   for (const auto& [flags, words] : cases) {
     const std::string command = std::string("env -u DISPLAY '") + SSS_RENDER_PATH + "' " + flags +
                                 " --output refused_setting.png 2> refused_setting.err";
