@@ -99,15 +99,9 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--memory-cap") {
       o.memory_cap = sss::cli::memory_cap(flag, value());
     } else if (flag == "--isolated") {
-      const std::string ratio = value();
-      o.isolation_ratio = ratio == "keep" ? 0.0 : sss::cli::number(flag, ratio);
-      if (ratio != "keep" && !(o.isolation_ratio > 1.0 && o.isolation_ratio <= 1e6))
-        throw std::invalid_argument("--isolated: needs a ratio above 1 (up to 1e6) or keep");
+      o.isolation_ratio = sss::cli::isolation_ratio(flag, value());
     } else if (flag == "--fit") {
-      const std::string fit = value();
-      if (fit != "surface" && fit != "all")
-        throw std::invalid_argument("--fit: needs surface or all, not '" + fit + "'");
-      o.fit_all = fit == "all";
+      o.fit_all = sss::cli::fit_all(flag, value());
     } else if (flag == "--size") {
       const std::string s = value();
       if (std::sscanf(s.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 16 ||

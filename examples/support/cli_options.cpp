@@ -268,15 +268,9 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--ortho") {
       o.ortho = true;
     } else if (flag == "--fit") {
-      const std::string fit = value();
-      if (fit != "surface" && fit != "all")
-        throw std::invalid_argument("--fit: needs surface or all, not '" + fit + "'");
-      o.fit_all = fit == "all";
+      o.fit_all = fit_all(flag, value());
     } else if (flag == "--isolated") {
-      const std::string ratio = value();
-      o.isolation_ratio = ratio == "keep" ? 0.0 : number(flag, ratio);
-      if (ratio != "keep" && !(o.isolation_ratio > 1.0 && o.isolation_ratio <= 1e6))
-        throw std::invalid_argument("--isolated: needs a ratio above 1 (up to 1e6) or keep");
+      o.isolation_ratio = isolation_ratio(flag, value());
     } else if (flag == "--grid-level") {
       o.grid_level = whole(flag, value(), 0, 10);
     } else if (flag == "--max-map") {
@@ -336,6 +330,20 @@ Options parse(int argc, char** argv) {
   if (o.light_dirs.size() + o.point_lights.size() > 4)
     throw std::invalid_argument("--light-dir, --point-light: at most 4 lights are supported");
   return o;
+}
+
+bool fit_all(const std::string& flag, const std::string& text) {
+  if (text != "surface" && text != "all")
+    throw std::invalid_argument(flag + ": needs surface or all, not '" + text + "'");
+  return text == "all";
+}
+
+double isolation_ratio(const std::string& flag, const std::string& text) {
+  if (text == "keep") return 0.0;
+  const double ratio = number(flag, text);
+  if (!(ratio > 1.0 && ratio <= 1e6))
+    throw std::invalid_argument(flag + ": needs a ratio above 1 (up to 1e6) or keep");
+  return ratio;
 }
 
 std::vector<Light> lights_of(const Options& o, const Eigen::Vector3d& centre) {

@@ -102,6 +102,10 @@ class Arguments {
 double number(const std::string& flag, const std::string& text);
 // A whole number from 0 to hi; throws std::invalid_argument naming the flag otherwise.
 std::size_t count(const std::string& flag, const std::string& text, double hi);
+// --fit's value: true for all, false for surface.
+bool fit_all(const std::string& flag, const std::string& text);
+// --isolated's value: the ratio, or 0 for keep.
+double isolation_ratio(const std::string& flag, const std::string& text);
 // --memory-cap's value, MiB, in bytes.
 std::size_t memory_cap(const std::string& flag, const std::string& text);
 std::string usage();
