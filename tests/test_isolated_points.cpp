@@ -8,33 +8,12 @@
 #include <random>
 
 #include "isolated_points.h"
+#include "room_scan.h"
 
 namespace sss {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-
-// A 10 x 6 x 3 m room (floor at z = 0) scanned from (2, 2, 1.5) at `step` radians in azimuth
-// and elevation, range noise of `noise` m: the nearest hit among the six faces of each ray.
-std::vector<Eigen::Vector3d> room_scan(double step, double noise, unsigned seed) {
-  const Eigen::Vector3d station(2.0, 2.0, 1.5), lo(0, 0, 0), hi(10, 6, 3);
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> range_noise(0.0, noise);
-  std::vector<Eigen::Vector3d> points;
-  for (double elevation = -0.5 * kPi + step; elevation < 0.5 * kPi; elevation += step)
-    for (double azimuth = 0.0; azimuth < 2.0 * kPi; azimuth += step / std::cos(elevation)) {
-      const Eigen::Vector3d ray(std::cos(elevation) * std::cos(azimuth),
-                                std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-      double t = 1e9;
-      for (int a = 0; a < 3; ++a)
-        if (std::abs(ray[a]) > 1e-12)
-          t = std::min(t, ((ray[a] > 0 ? hi[a] : lo[a]) - station[a]) / ray[a]);
-      points.push_back(station + (t + range_noise(rng)) * ray);
-    }
-  return points;
-}
-
 TEST(IsolatedPoints, RoomScanKeepsItsSurfaceAndLosesItsStrays) {
-  std::vector<Eigen::Vector3d> points = room_scan(0.004, 0.003, 7);
+  std::vector<Eigen::Vector3d> points = test::room_scan(0.004, 0.003, 7);
   const std::size_t surface = points.size();
   // Strays: returns 0.5-1 m off a wall, a bird 1.2 m above the floor, a point in the air
   // between the ceiling and the floor, a pair 1.2 m off the far wall. Isolation is relative
