@@ -9,17 +9,35 @@
 
 namespace sss {
 
-std::vector<Rgb> outgoing_radiance(const SurfelCloud& cloud, const Material& material,
-                                   const std::vector<Rgb>& B, const Eigen::Vector3d& view_direction) {
+namespace {
+
+// Lo = Ft(eta, |n . wo|) B at each surfel, wo(s) the unit direction towards the camera.
+template <typename TowardsCamera>
+std::vector<Rgb> outgoing(const SurfelCloud& cloud, const Material& material,
+                          const std::vector<Rgb>& B, const TowardsCamera& wo) {
   if (B.size() != cloud.size())
     throw std::invalid_argument("[sss::outgoing_radiance] one B per surfel is needed");
-  const Eigen::Vector3d wo = view_direction.normalized();
   std::vector<Rgb> Lo(B.size());
   for (std::size_t s = 0; s < B.size(); ++s) {
-    const double cos_o = std::fabs(cloud.normals[s].dot(wo));
+    const double cos_o = std::fabs(cloud.normals[s].dot(wo(s)));
     for (int c = 0; c < 3; ++c) Lo[s][c] = fresnel_transmittance(material.eta[c], cos_o) * B[s][c];
   }
   return Lo;
+}
+
+}  // namespace
+
+std::vector<Rgb> outgoing_radiance(const SurfelCloud& cloud, const Material& material,
+                                   const std::vector<Rgb>& B, const Eigen::Vector3d& view_direction) {
+  const Eigen::Vector3d wo = view_direction.normalized();
+  return outgoing(cloud, material, B, [&wo](std::size_t) { return wo; });
+}
+
+std::vector<Rgb> outgoing_radiance_to_eye(const SurfelCloud& cloud, const Material& material,
+                                          const std::vector<Rgb>& B, const Eigen::Vector3d& eye) {
+  return outgoing(cloud, material, B, [&](std::size_t s) -> Eigen::Vector3d {
+    return (eye - cloud.positions[s]).normalized();
+  });
 }
 
 LinearImage render_view(const SurfelCloud& cloud, const Material& material,

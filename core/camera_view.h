@@ -16,9 +16,12 @@ struct OrthoCamera {
   int width = 512, height = 512;
 };
 
-// Lo for each surfel seen along view_direction: Ft(eta, |n . wo|) B.
+// Lo for each surfel seen along view_direction: Ft(eta, |n . wo|) B (eq. 14).
 std::vector<Rgb> outgoing_radiance(const SurfelCloud& cloud, const Material& material,
                                    const std::vector<Rgb>& B, const Eigen::Vector3d& view_direction);
+// The same seen from the point `eye` (a perspective camera): wo from each surfel to the eye.
+std::vector<Rgb> outgoing_radiance_to_eye(const SurfelCloud& cloud, const Material& material,
+                                          const std::vector<Rgb>& B, const Eigen::Vector3d& eye);
 
 // `cloud` validated, `B` one per surfel. Throws std::invalid_argument for a bad camera.
 LinearImage render_view(const SurfelCloud& cloud, const Material& material,

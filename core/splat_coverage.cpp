@@ -269,24 +269,6 @@ std::vector<double> cover_radii_with(const SurfelCloud& cloud, const SurfelIndex
   return filled;
 }
 
-// Mean distance to the nearest other point (duplicates skipped), as SurfelCloud::mean_spacing.
-double mean_spacing_with(const SurfelCloud& cloud, const SurfelIndex& index) {
-  std::vector<std::size_t> near;
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (const Eigen::Vector3d& p : cloud.positions) {
-    index.nearest(p, 8, near);
-    for (std::size_t j : near) {
-      const double d = (cloud.positions[j] - p).norm();
-      if (d > 0.0) {
-        sum += d;
-        ++count;
-        break;
-      }
-    }
-  }
-  return count > 0 ? sum / count : 0.0;
-}
 }  // namespace
 
 SplatCoverage measure_splat_coverage(const SurfelCloud& cloud, std::size_t max_cells) {
@@ -320,7 +302,7 @@ SplatRadii choose_splat_radii(const SurfelCloud& cloud, SplatRadiusMode mode, do
                     coverage.radius_for(coverage_target) > kPerPointTail * coverage.radius_for(0.05);
   const bool per_point = mode == SplatRadiusMode::PerPoint ||
                          (mode == SplatRadiusMode::Automatic && (coverage.spacing_spread > kPerPointSpread || tail));
-  const double spacing = mean_spacing_with(cloud, index);
+  const double spacing = mean_spacing(cloud.positions, index);
   if (coverage.measured == 0) {
     // No closed cell (a line, a handful of points): 1.5 mean spacings, else 1 % of the extent.
     const double extent = cloud.bounds().extent().norm();

@@ -1,6 +1,7 @@
 #include "surfel_cloud.h"
 
-#include <flann/flann.hpp>
+#include "surfel_index.h"
+
 
 #include <cmath>
 #include <sstream>
@@ -116,32 +117,7 @@ Bounds SurfelCloud::bounds() const {
 
 double SurfelCloud::mean_spacing() const {
   if (positions.size() < 2) return 0.0;
-  const Eigen::Vector3d origin = bounds().center();
-  std::vector<double> coords(positions.size() * 3);
-  for (std::size_t i = 0; i < positions.size(); ++i)
-    for (int k = 0; k < 3; ++k) coords[3 * i + k] = positions[i][k] - origin[k];
-  flann::Matrix<double> data(coords.data(), positions.size(), 3);
-  flann::Index<flann::L2<double>> index(data, flann::KDTreeSingleIndexParams(16));
-  index.buildIndex();
-  std::vector<std::vector<std::size_t>> ids;
-  std::vector<std::vector<double>> dist2;
-  flann::SearchParams params;
-  params.cores = 0;
-  // Ask for several neighbours so duplicates (distance 0) do not hide the spacing.
-  const int k = static_cast<int>(std::min<std::size_t>(positions.size(), 8));
-  index.knnSearch(data, ids, dist2, k, params);
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (const auto& row : dist2) {
-    for (double d2 : row) {
-      if (d2 > 0.0) {
-        sum += std::sqrt(d2);
-        ++count;
-        break;
-      }
-    }
-  }
-  return count > 0 ? sum / count : 0.0;
+  return sss::mean_spacing(positions, SurfelIndex(positions));
 }
 
 }  // namespace sss

@@ -54,4 +54,24 @@ void SurfelIndex::nearest(const Eigen::Vector3d& x, int k, std::vector<std::size
   out = std::move(ids[0]);
 }
 
+double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const SurfelIndex& index) {
+  double sum = 0.0;
+  long count = 0;
+  const long n = static_cast<long>(positions.size());
+#pragma omp parallel for reduction(+ : sum, count) schedule(static)
+  for (long i = 0; i < n; ++i) {
+    std::vector<std::size_t> near;
+    index.nearest(positions[i], 8, near);  // several, so that duplicates do not hide it
+    for (std::size_t j : near) {
+      const double d = (positions[j] - positions[i]).norm();
+      if (d > 0.0) {
+        sum += d;
+        ++count;
+        break;
+      }
+    }
+  }
+  return count > 0 ? sum / static_cast<double>(count) : 0.0;
+}
+
 }  // namespace sss

@@ -27,4 +27,8 @@ class SurfelIndex {
   std::size_t count_ = 0;
 };
 
+// Mean distance from a point to its nearest other point (duplicates skipped; 0 when every
+// point sits at one place), `index` built over `positions`.
+double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const SurfelIndex& index);
+
 }  // namespace sss

@@ -31,9 +31,9 @@
 
 #include "baked_ply.h"
 #include "cli_options.h"
+#include "camera_view.h"
 #include "cloud_input.h"
 #include "isolated_points.h"
-#include "fresnel.h"
 #include "linear_image.h"
 #include "png_output.h"
 #include "procedural_shapes.h"
@@ -253,16 +253,13 @@ int run(const Options& o) {
   if (!o.bake_ply.empty()) {
     double eye[3];
     camera->GetPosition(eye);
-    const Eigen::Vector3d eye_position(eye[0], eye[1], eye[2]);
-    std::vector<sss::Rgb> Lo(cloud.size());
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-      const Eigen::Vector3d wo =
-          o.ortho ? o.view_dir.normalized() : (eye_position - cloud.positions[i]).normalized();
-      const double cos_o = std::fabs(cloud.normals[i].dot(wo));
-      for (int ch = 0; ch < 3; ++ch)
-        Lo[i][ch] = sss::fresnel_transmittance(material.eta[ch], cos_o) *
-                    B->GetValue(static_cast<vtkIdType>(3 * i + ch));
-    }
+    std::vector<sss::Rgb> radiance(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      for (int ch = 0; ch < 3; ++ch) radiance[i][ch] = B->GetValue(static_cast<vtkIdType>(3 * i + ch));
+    const std::vector<sss::Rgb> Lo =
+      o.ortho ? sss::outgoing_radiance(cloud, material, radiance, o.view_dir)
+              : sss::outgoing_radiance_to_eye(cloud, material, radiance,
+                                              Eigen::Vector3d(eye[0], eye[1], eye[2]));
     sss::cli::write_baked_ply(cloud.positions, cloud.normals, Lo, o.bake_ply);
   }
   if (o.frames > 0) {

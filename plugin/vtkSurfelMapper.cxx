@@ -77,6 +77,7 @@ struct vtkSurfelMapper::Internals
 vtkSurfelMapper::vtkSurfelMapper()
   : Impl(new Internals)
 {
+  this->CoverageTarget = sss::kDefaultCoverageTarget;
 }
 
 vtkSurfelMapper::~vtkSurfelMapper() = default;

@@ -12,6 +12,7 @@
 
 #include "light_map.h"
 #include "material.h"
+#include "splat_coverage.h"
 #include "surfel_cloud.h"
 
 class vtkSubsurfacePass;
@@ -48,7 +49,7 @@ struct Options {
   double exposure = 0.0;  // 0: automatic
   int frames = 0;
   double radius_scale = 1.0;
-  double coverage_target = 1e-4;       // uncovered area fraction the radius may leave
+  double coverage_target = kDefaultCoverageTarget;  // uncovered area fraction the radius may leave
   std::string radius_mode = "automatic";  // automatic, uniform, per-point
   std::string splatting = "blended";      // blended, discs
   std::size_t mesh_samples = 0;
