@@ -16,6 +16,7 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
+class vtkWindow;
 
 namespace sss
 {
@@ -41,6 +42,21 @@ vtkShaderProgram* ready_quad(
 // `source` with its hooks filled: //SSS::Gather::Dec by `gather`, //SSS::Dipole::Dec by
 // dipole.glsl, and the SSS_MAX_LIGHTS and SSS_MAX_LEVELS constants.
 std::string shader_with_pieces(std::string source, const std::string& gather);
+
+// Releases the graphics resources of each texture or quad held (vtkSmartPointer or
+// std::unique_ptr; those not held are skipped) and lets go of it.
+template <typename... Held>
+void release_held(vtkWindow* window, Held&... held)
+{
+  const auto one = [window](auto& object) {
+    if (object)
+    {
+      object->ReleaseGraphicsResources(window);
+      object = nullptr;
+    }
+  };
+  (one(held), ...);
+}
 
 // Waits for the GPU when `finish` is set, so that a step's reported time is real.
 void finish_if(bool finish);

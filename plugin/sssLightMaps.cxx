@@ -68,14 +68,7 @@ LightMapAtlas GpuLightMaps::atlas() const
 void GpuLightMaps::release(vtkWindow* window)
 {
   vao_.release();
-  for (auto* t : { &point_, &power_, &normal_, &surfel_, &depth_ })
-  {
-    if (*t)
-    {
-      (*t)->ReleaseGraphicsResources(window);
-      *t = nullptr;
-    }
-  }
+  release_held(window, point_, power_, normal_, surfel_, depth_);
   fbo_->ReleaseGraphicsResources(window);
   width_ = height_ = 0;
 }
@@ -96,14 +89,7 @@ void GpuLightMaps::allocate(vtkOpenGLRenderWindow* window, bool paper, int width
     width = std::max(width, width_);
     height = std::max(height, height_);
   }
-  for (auto* t : { &point_, &power_, &normal_, &surfel_ })
-  {
-    if (*t)
-    {
-      (*t)->ReleaseGraphicsResources(window);
-      *t = nullptr;
-    }
-  }
+  release_held(window, point_, power_, normal_, surfel_);
   if (paper)
   {
     point_ = float_texture_2d(window, width, height);

@@ -111,29 +111,10 @@ LitCells::~LitCells() = default;
 
 void LitCells::release(vtkWindow* window)
 {
-  for (auto* t : { &E_, &fresnel_ })
-  {
-    if (*t)
-    {
-      (*t)->ReleaseGraphicsResources(window);
-      *t = nullptr;
-    }
-  }
+  release_held(window, E_, fresnel_, irradiance_quad_, reduce_quad_);
   for (auto& t : source_)
   {
-    if (t)
-    {
-      t->ReleaseGraphicsResources(window);
-      t = nullptr;
-    }
-  }
-  for (auto* q : { &irradiance_quad_, &reduce_quad_ })
-  {
-    if (*q)
-    {
-      (*q)->ReleaseGraphicsResources(window);
-      q->reset();
-    }
+    release_held(window, t);
   }
   fbo_->ReleaseGraphicsResources(window);
   atlas_lights_ = 0;

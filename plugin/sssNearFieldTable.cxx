@@ -67,14 +67,7 @@ void NearFieldTable::deactivate() const
 
 void NearFieldTable::release(vtkWindow* window)
 {
-  for (auto* t : { &rows_, &entries_ })
-  {
-    if (*t)
-    {
-      (*t)->ReleaseGraphicsResources(window);
-      *t = nullptr;
-    }
-  }
+  release_held(window, rows_, entries_);
 }
 
 }

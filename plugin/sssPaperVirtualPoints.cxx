@@ -81,14 +81,7 @@ struct ReceiverList
   void release(vtkWindow* window)
   {
     texel->ReleaseGraphicsResources();
-    for (auto* t : { &points, &B })
-    {
-      if (*t)
-      {
-        (*t)->ReleaseGraphicsResources(window);
-        *t = nullptr;
-      }
-    }
+    release_held(window, points, B);
   }
 };
 
@@ -110,16 +103,7 @@ void PaperVirtualPoints::release(vtkWindow* window)
   receivers_->release(window);
   grid_index_->ReleaseGraphicsResources();
   grid_vao_.release();
-  if (radiance_)
-  {
-    radiance_->ReleaseGraphicsResources(window);
-    radiance_ = nullptr;
-  }
-  if (taps_quad_)
-  {
-    taps_quad_->ReleaseGraphicsResources(window);
-    taps_quad_.reset();
-  }
+  release_held(window, radiance_, taps_quad_);
   taps_fbo_->ReleaseGraphicsResources(window);
   grid_fbo_->ReleaseGraphicsResources(window);
 }

@@ -132,14 +132,7 @@ void SurfelList::set(vtkShaderProgram* program) const
 
 void SurfelList::release(vtkWindow* window)
 {
-  for (auto* t : { &point_, &shape_, &cell_, &albedo_ })
-  {
-    if (*t)
-    {
-      (*t)->ReleaseGraphicsResources(window);
-      *t = nullptr;
-    }
-  }
+  release_held(window, point_, shape_, cell_, albedo_);
   texel_->ReleaseGraphicsResources();
 }
 

@@ -52,16 +52,7 @@ struct SurfelPipeline::Gpu
     list.release(window);
     cells.release(window);
     near.release(window);
-    if (B)
-    {
-      B->ReleaseGraphicsResources(window);
-      B = nullptr;
-    }
-    if (gather_quad)
-    {
-      gather_quad->ReleaseGraphicsResources(window);
-      gather_quad.reset();
-    }
+    release_held(window, B, gather_quad);
     fbo->ReleaseGraphicsResources(window);
   }
 

@@ -31,11 +31,7 @@ void SurfelResolve::allocate(vtkOpenGLRenderWindow* window, std::size_t count)
 
 void SurfelResolve::release(vtkWindow* window)
 {
-  if (list_)
-  {
-    list_->ReleaseGraphicsResources(window);
-    list_ = nullptr;
-  }
+  release_held(window, list_);
   no_texel_->ReleaseGraphicsResources();
   no_texel_count_ = 0;
   vao_.release();

@@ -61,10 +61,7 @@ TranslucentActorState::TranslucentActorState()
 {
 }
 
-TranslucentActorState::~TranslucentActorState()
-{
-  delete gpu_;
-}
+TranslucentActorState::~TranslucentActorState() = default;
 
 vtkTextureObject* TranslucentActorState::surfel_radiance() const
 {

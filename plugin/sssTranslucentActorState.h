@@ -17,6 +17,7 @@
 #include "vtkType.h"
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ class TranslucentActorState
 public:
   TranslucentActorState();
   ~TranslucentActorState();
+  TranslucentActorState(const TranslucentActorState&) = delete;  // owns GPU resources
+  TranslucentActorState& operator=(const TranslucentActorState&) = delete;
 
   // Runs steps 1-2 where their inputs changed. `finish` waits for the GPU after each step so
   // that the reported times are real. Returns false with `error` set when it cannot run.
@@ -72,7 +75,7 @@ private:
   bool bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
     bool albedo_from_colour, const QualitySettings& settings, StepReport& report, std::string& error);
 
-  Gpu* gpu_;
+  std::unique_ptr<Gpu> gpu_;
   Material material_;
   std::vector<double> material_key_;
   vtkMTimeType geometry_time_ = 0;

@@ -61,14 +61,7 @@ struct vtkSurfelMapper::Internals
 
   void ReleaseSplatBuffers(vtkWindow* window)
   {
-    for (auto* t : { &this->SplatDepth, &this->WeightedColour, &this->WeightedNormal })
-    {
-      if (*t)
-      {
-        (*t)->ReleaseGraphicsResources(window);
-        *t = nullptr;
-      }
-    }
+    sss::release_held(window, this->SplatDepth, this->WeightedColour, this->WeightedNormal);
     this->SplatBuffer->ReleaseGraphicsResources(window);
     this->Normalise.reset();
   }
