@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <string>
 
 #include "cloud_input.h"
 #include "error_metric.h"
@@ -45,6 +46,48 @@ SurfelCloud load_scan(const std::string& path) {
   return cloud;
 }
 
+// The GPU path's defaults against the reference (cached per cloud, material and light) at 3000
+// points of `cloud` (a fixed seed): B at every point, the reference's, the error at those
+// points, and a line of the pass's sizes and times.
+struct AgainstReference {
+  std::vector<Rgb> B;
+  SurfelRadiance reference;
+  ErrorStats error;
+  std::string pass_line;
+};
+
+AgainstReference against_reference(const SurfelCloud& cloud, const Material& material,
+                                   const std::vector<Light>& lights) {
+  AgainstReference out;
+  ReferenceSettings settings;
+  settings.receivers = sample_of(cloud, 3000, 1);
+  Stopwatch clock;
+  out.reference = cached_reference(SSS_TEST_REFERENCE_CACHE, cloud, material, lights, settings);
+  const double reference_seconds = clock.lap();
+  GpuScene scene(cloud, material, lights);
+  scene.pass->MeasureStepTimesOn();
+  out.B = scene.render_B();
+  const double gpu_seconds = clock.lap();
+  if (out.B.size() != cloud.size()) return out;
+  std::vector<Rgb> got, expected;
+  for (std::size_t i : settings.receivers) {
+    got.push_back(out.B[i]);
+    expected.push_back(out.reference.B[i]);
+  }
+  out.error = compare_radiance(got, expected);
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "%lld lit cells, texel %.3f mm, near field to %.2f mm, far field from %.2f mm; "
+                "GPU %.1f s (bake %.1f s; light move: %s), reference %.1f s",
+                static_cast<long long>(scene.pass->GetLastLitCells()),
+                scene.pass->GetLastTexelMillimetres(), scene.pass->GetLastNearReachMillimetres(),
+                scene.pass->GetLastFarFromMillimetres(), gpu_seconds,
+                scene.pass->GetLastBakeSeconds(), scene.pass->GetLastLightMoveProfile().c_str(),
+                reference_seconds);
+  out.pass_line = line;
+  return out;
+}
+
 class GpuVsReference : public ::testing::TestWithParam<ScanCase> {};
 
 // The project's error metric (core/error_metric.h) at 3000 points of each scan, the reference cached per scan,
@@ -58,18 +101,8 @@ TEST_P(GpuVsReference, MeetsItsBars) {
   if (path.empty()) GTEST_SKIP() << c.file << " is not in the shared data folder";
   const SurfelCloud cloud = load_scan(path);
   const Material material = Material::preset(c.material, 1.3, 1000.0);
-  const std::vector<Light> lights{{c.light, 1.0}};
-  ReferenceSettings settings;
-  settings.receivers = sample_of(cloud, 3000, 1);  // 3000 points, a fixed seed
-  Stopwatch clock;
-  const SurfelRadiance reference =
-      cached_reference(SSS_TEST_REFERENCE_CACHE, cloud, material, lights, settings);
-  const double reference_seconds = clock.lap();
-  GpuScene scene(cloud, material, lights);
-  scene.pass->MeasureStepTimesOn();
-  const std::vector<Rgb> B = scene.render_B();
-  const double gpu_seconds = clock.lap();
-  ASSERT_EQ(B.size(), cloud.size());
+  const AgainstReference r = against_reference(cloud, material, {{c.light, 1.0}});
+  ASSERT_EQ(r.B.size(), cloud.size());
   // Radiance is never negative: at every point of the GPU path, at the reference's points.
   const auto negatives = [](const std::vector<Rgb>& values) {
     std::size_t count = 0;
@@ -77,25 +110,12 @@ TEST_P(GpuVsReference, MeetsItsBars) {
       if (v[0] < 0.0 || v[1] < 0.0 || v[2] < 0.0) ++count;
     return count;
   };
-  EXPECT_EQ(negatives(B), 0u) << "points with negative B, GPU";
-  EXPECT_EQ(negatives(reference.B), 0u) << "points with negative B, reference";
-  std::vector<Rgb> got, expected;
-  for (std::size_t i : settings.receivers) {
-    got.push_back(B[i]);
-    expected.push_back(reference.B[i]);
-  }
-  const ErrorStats e = compare_radiance(got, expected);
-  std::printf("[ gpu vs reference ] %s %s: %zu surfels, %lld lit cells, texel %.3f mm, near "
-              "field to %.2f mm, far field from %.2f mm; %s; GPU %.1f s (bake %.1f s; light "
-              "move: %s), reference %.1f s\n",
-              c.file, c.material, cloud.size(),
-              static_cast<long long>(scene.pass->GetLastLitCells()),
-              scene.pass->GetLastTexelMillimetres(), scene.pass->GetLastNearReachMillimetres(),
-              scene.pass->GetLastFarFromMillimetres(), e.summary().c_str(), gpu_seconds,
-              scene.pass->GetLastBakeSeconds(), scene.pass->GetLastLightMoveProfile().c_str(),
-              reference_seconds);
-  EXPECT_LT(e.mean, c.mean_bar);
-  EXPECT_LT(e.p99, c.p99_bar);
+  EXPECT_EQ(negatives(r.B), 0u) << "points with negative B, GPU";
+  EXPECT_EQ(negatives(r.reference.B), 0u) << "points with negative B, reference";
+  std::printf("[ gpu vs reference ] %s %s: %zu surfels, %s; %s\n", c.file, c.material,
+              cloud.size(), r.pass_line.c_str(), r.error.summary().c_str());
+  EXPECT_LT(r.error.mean, c.mean_bar);
+  EXPECT_LT(r.error.p99, c.p99_bar);
 }
 
 const Eigen::Vector3d kObjectLight(0.3, 0.4, -1.0), kSceneLight(0.3, -0.5, -1.0),
@@ -167,35 +187,19 @@ TEST(GpuTerrestrial, RoomScanFromOneStationMeetsItsBars) {
   }
   EXPECT_LT(farthest_off_a_face, 0.05) << "a stray point is left";
 
-  const Material material = Material::preset("marble", 1.3, 1000.0);
-  const std::vector<Light> lights{{Eigen::Vector3d(0.3, 0.2, 1.0), 1.0}};
-  ReferenceSettings settings;
-  settings.receivers = sample_of(cloud, 3000, 1);
-  const SurfelRadiance reference =
-      cached_reference(SSS_TEST_REFERENCE_CACHE, cloud, material, lights, settings);
-  const double reference_seconds = clock.lap();
-  GpuScene scene(cloud, material, lights);
-  scene.pass->MeasureStepTimesOn();
-  const std::vector<Rgb> B = scene.render_B();
-  const double gpu_seconds = clock.lap();
-  std::vector<Rgb> got, expected;
-  for (std::size_t i : settings.receivers) {
-    got.push_back(B[i]);
-    expected.push_back(reference.B[i]);
-  }
-  const ErrorStats e = compare_radiance(got, expected);
+  const AgainstReference r = against_reference(cloud, Material::preset("marble", 1.3, 1000.0),
+                                                {{Eigen::Vector3d(0.3, 0.2, 1.0), 1.0}});
+  ASSERT_EQ(r.B.size(), cloud.size());
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   std::printf("[ terrestrial room ] %zu surfels (%zu isolated left out, spacing spread %.1f, "
-              "per-point radii %s); %s; load %.1f s, GPU %.1f s (bake %.1f s; light move: %s), "
-              "reference %.1f s; peak memory of the test process %.0f MiB\n",
+              "per-point radii %s), loaded in %.1f s; %s; %s; peak memory of the test process "
+              "%.0f MiB\n",
               cloud.size(), loaded.isolated, radii.spacing_spread,
-              radii.per_point_chosen() ? "yes" : "no", e.summary().c_str(), load_seconds,
-              gpu_seconds, scene.pass->GetLastBakeSeconds(),
-              scene.pass->GetLastLightMoveProfile().c_str(), reference_seconds,
-              usage.ru_maxrss / 1024.0);
-  EXPECT_LT(e.mean, 0.01);
-  EXPECT_LT(e.p99, 0.05);
+              radii.per_point_chosen() ? "yes" : "no", load_seconds, r.pass_line.c_str(),
+              r.error.summary().c_str(), usage.ru_maxrss / 1024.0);
+  EXPECT_LT(r.error.mean, 0.01);
+  EXPECT_LT(r.error.p99, 0.05);
 }
 
 // UTM coordinates near 5e6 m: the pass works relative to the bounds centre in double, so the
