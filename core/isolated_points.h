@@ -21,7 +21,6 @@ struct IsolationSettings {
   double ratio = 5.0;   // isolation above which a point is left out
   // Throws std::invalid_argument naming the value: k below 2 or over 256, a ratio not above 1.
   void check() const;
-  std::string summary() const;  // "isolated points (16 neighbours, ratio 5)" or "off"
 };
 
 struct IsolationReport {
