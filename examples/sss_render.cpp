@@ -85,10 +85,12 @@ struct Timings {
   double light_static = 0, light_moving = 0, plain_points = 0;  // mean seconds per frame
 };
 
-// What the load left out as isolated (cloud_input.h).
+// What the load left out as isolated and the noise it measured (cloud_input.h).
 struct Isolation {
   std::size_t left_out = 0;
   double largest_ratio = 0.0;
+  bool denoised = false;
+  double noise_median = 0.0, noise_p90 = 0.0;
 };
 
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
@@ -125,6 +127,9 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"neighbours\": " << sss::IsolationSettings{}.neighbours
         << ", \"left_out\": " << isolation.left_out
         << ", \"largest_ratio\": " << isolation.largest_ratio << "},\n"
+        << "  \"measured_surface\": {\"denoised\": " << (isolation.denoised ? "true" : "false")
+        << ", \"noise_median\": " << isolation.noise_median
+        << ", \"noise_p90\": " << isolation.noise_p90 << "},\n"
         << "  \"counts\": {\"surfels\": " << cloud.size()
         << ", \"lit_cells\": " << pass->GetLastLitCells()
         << ", \"near_field_entries\": " << pass->GetLastNearFieldEntries()
@@ -179,8 +184,9 @@ int run(const Options& o) {
     cloud.validate();
   } else {
     sss::cli::LoadedCloud loaded =
-      sss::cli::load_cloud(o.input, o.mesh_samples, o.memory_cap, o.isolation_ratio);
-    isolation = {loaded.isolated, loaded.largest_isolation};
+      sss::cli::load_cloud(o.input, o.mesh_samples, o.memory_cap, o.isolation_ratio, o.denoise);
+    isolation = {loaded.isolated, loaded.largest_isolation, loaded.denoised, loaded.noise_median,
+                 loaded.noise_p90};
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = std::move(loaded.cloud);
   }

@@ -152,6 +152,11 @@ usage: sss_render [INPUT.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc] [options]
                             RATIO times that of those neighbours (default 5: stray returns,
                             flying pixels; the shared scans' own surfaces reach 3.0); keep:
                             none left out
+  --denoise on|off          on (default): each point moved onto the smooth surface fitted to
+                            its neighbours over a neighbourhood sized from the depth noise
+                            measured there, normals (when estimated) from that surface, so a
+                            scan shows its surface, not its noise; off: the points as given,
+                            normals fitted over 3 mean spacings (--stats: measured_surface)
   --memory-cap MIB          largest memory a file or --samples may claim; a header that
                             claims more, or more data than the file holds, is refused before
                             anything is read (default: half the physical memory)
@@ -271,6 +276,11 @@ Options parse(int argc, char** argv) {
       o.fit_all = fit_all(flag, value());
     } else if (flag == "--isolated") {
       o.isolation_ratio = isolation_ratio(flag, value());
+    } else if (flag == "--denoise") {
+      const std::string v = value();
+      if (v != "on" && v != "off")
+        throw std::invalid_argument(flag + ": '" + v + "' is neither on nor off");
+      o.denoise = v == "on";
     } else if (flag == "--grid-level") {
       o.grid_level = whole(flag, value(), 0, 10);
     } else if (flag == "--max-map") {

@@ -55,6 +55,7 @@ struct Options {
   std::size_t mesh_samples = 0;
   std::size_t memory_cap = 0;  // bytes a load may claim; 0: the loader's default
   double isolation_ratio = 5.0;  // isolated points left out above it (isolated_points.h); 0 keeps
+  bool denoise = true;  // points onto the surface they measured (denoised_surface.h)
   bool help = false;
 };
 

@@ -10,7 +10,7 @@
 namespace sss::cli {
 
 LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples, std::size_t memory_cap,
-                       double isolation_ratio) {
+                       double isolation_ratio, bool denoise) {
   LoadOptions load;
   load.mesh_samples = mesh_samples;
   load.memory_cap = memory_cap;
@@ -18,6 +18,7 @@ LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples, std::s
   SurfelOptions options;
   options.drop_isolated = isolation_ratio > 0.0;
   if (options.drop_isolated) options.isolation_ratio = isolation_ratio;
+  options.denoise = denoise;
   const Surfels surfels = makeSurfels(points, options);
 
   vtkPolyData* polydata = surfels.polydata;
@@ -40,6 +41,9 @@ LoadedCloud load_cloud(const std::string& path, std::size_t mesh_samples, std::s
   cloud.radius = surfels.spacing;
   loaded.isolated = surfels.isolated_points;
   loaded.largest_isolation = surfels.largest_isolation;
+  loaded.denoised = surfels.denoised;
+  loaded.noise_median = surfels.noise_median;
+  loaded.noise_p90 = surfels.noise_p90;
   cloud.validate();
   loaded.description = points.description + "\n" + surfels.summary();
   return loaded;

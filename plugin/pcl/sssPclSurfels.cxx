@@ -14,6 +14,7 @@
 #include <cmath>
 #include <vector>
 
+#include "denoised_surface.h"
 #include "isolated_points.h"
 
 namespace sss {
@@ -106,14 +107,29 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
   const std::vector<bool> on_surface = find_surface_points(finite, isolation, &isolated);
   s.isolated_points = isolated.isolated;
   s.largest_isolation = isolated.largest_ratio;
-  xyz->reserve(finite.size() - isolated.isolated);
+  std::vector<Eigen::Vector3d> measured;
+  measured.reserve(finite.size() - isolated.isolated);
   std::size_t kept_finite = 0;
   for (std::size_t k = 0; k < finite.size(); ++k) {
     if (!on_surface[k]) continue;
-    xyz->push_back(pcl::PointXYZ(cloud[source[k]].x, cloud[source[k]].y, cloud[source[k]].z));
+    measured.push_back(finite[k]);
     source[kept_finite++] = source[k];
   }
   source.resize(kept_finite);
+  // The surface the scan measured (core/denoised_surface.h): points on it, its normals.
+  DenoiseSettings denoising;
+  denoising.enabled = options.denoise;
+  denoising.normal_tolerance = options.normal_tolerance;
+  DenoiseReport denoised_report;
+  const DenoisedSurface surface = denoise_surface(measured, denoising, &denoised_report);
+  s.denoised = denoising.enabled && denoised_report.points > 0;
+  s.noise_median = denoised_report.median_noise;
+  s.noise_p90 = denoised_report.p90_noise;
+  s.denoise_summary = s.denoised ? denoised_report.summary() : std::string();
+  xyz->reserve(surface.positions.size());
+  for (const Eigen::Vector3d& p : surface.positions)
+    xyz->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()),
+                                 static_cast<float>(p.z())));
 
   pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
   tree->setInputCloud(xyz);
@@ -137,8 +153,14 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
     const double radius = options.normal_radius > 0.0
                             ? options.normal_radius
                             : options.normal_radius_spacings * s.spacing;
-    const pcl::PointCloud<pcl::Normal> estimated =
-      estimate_normals(xyz, tree, radius, options.normal_neighbours);
+    pcl::PointCloud<pcl::Normal> estimated;
+    if (s.denoised) {
+      estimated.resize(xyz->size());
+      for (std::size_t k = 0; k < xyz->size(); ++k)
+        estimated[k].getNormalVector3fMap() = surface.normals[k].cast<float>();
+    } else {
+      estimated = estimate_normals(xyz, tree, radius, options.normal_neighbours);
+    }
     NormalOrientation orientation = options.orientation;
     Eigen::Vector3f viewpoint = options.viewpoint;
     if (orientation == NormalOrientation::Automatic) {
@@ -183,7 +205,7 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
     const std::size_t k = kept[j];
     const PointT& p = cloud[source[k]];
     const vtkIdType id = static_cast<vtkIdType>(j);
-    points->SetPoint(id, p.x, p.y, p.z);
+    points->SetPoint(id, surface.positions[k].data());
     const Eigen::Vector3f n = normals[k].normalized();
     normal_array->SetTuple3(id, n.x(), n.y(), n.z());
     if constexpr (pcl::traits::has_color_v<PointT>)
@@ -209,6 +231,7 @@ std::string Surfels::summary() const {
   if (has_colours) text += ", colours as albedo";
   if (nonfinite_points) text += ", " + std::to_string(nonfinite_points) + " non-finite dropped";
   if (isolated_points) text += ", " + std::to_string(isolated_points) + " isolated dropped";
+  if (denoised) text += ", on the measured surface (" + denoise_summary + ")";
   if (points_without_normal)
     text += ", " + std::to_string(points_without_normal) + " without a normal dropped";
   return text;

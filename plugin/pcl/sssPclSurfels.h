@@ -39,6 +39,13 @@ struct SurfelOptions {
   bool drop_isolated = true;
   int isolation_neighbours = 16;
   double isolation_ratio = 5.0;
+  // Points moved onto the smooth surface fitted around each over a neighbourhood sized from the
+  // depth noise measured there, the normals (when estimated) that surface's, so that a scan
+  // shows its surface and not its noise (core/denoised_surface.h); normal_tolerance is the
+  // normal's standard error in radians the neighbourhood is sized for. Off: the points as
+  // given, normals by NormalEstimationOMP over normal_radius.
+  bool denoise = true;
+  double normal_tolerance = 0.02;
 };
 
 struct Surfels {
@@ -53,6 +60,9 @@ struct Surfels {
   std::size_t points_without_normal = 0;  // no usable normal given or estimated
   std::size_t isolated_points = 0;        // left out as isolated (SurfelOptions::drop_isolated)
   double largest_isolation = 0.0;         // the largest isolation ratio among the finite points
+  bool denoised = false;                  // the points are on the measured surface
+  double noise_median = 0.0, noise_p90 = 0.0;  // depth noise measured around the points
+  std::string denoise_summary;            // DenoiseReport::summary()
   std::size_t size() const;
   std::string summary() const;
 };
