@@ -158,9 +158,11 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
     fit.noise = reach * std::sqrt(sum2 / static_cast<double>(kept - quadric_terms));
   }
   const Eigen::Vector3d normal = n - coefficients[1] * t1 - coefficients[2] * t2;
-  // A point farther off the fitted surface than tau is not on it (a flying pixel, the far side
-  // of a depth edge): it stays where it is, with its first normal.
-  if (!normal.allFinite() || !(normal.norm() > 0.0) || !(std::fabs(coefficients[0]) <= tau))
+  // A point over twice the floor (9.4 sigma; twice tau on the first fit, which does not know
+  // the noise yet) off the fitted surface is not on it (a flying pixel, a corner the quadric
+  // rounds off): it stays where it is, with its first normal.
+  const double allowed = 2.0 * (noise_floor > 0.0 ? noise_floor / reach : tau);
+  if (!normal.allFinite() || !(normal.norm() > 0.0) || !(std::fabs(coefficients[0]) <= allowed))
     return fit;
   fit.position = p + coefficients[0] * reach * n;
   fit.normal = normal.normalized();

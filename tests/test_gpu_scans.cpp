@@ -185,7 +185,10 @@ TEST(GpuTerrestrial, RoomScanFromOneStationMeetsItsBars) {
     const double off = std::min({p.x(), 10.0 - p.x(), p.y(), 6.0 - p.y(), p.z()});
     farthest_off_a_face = std::max(farthest_off_a_face, std::abs(off));
   }
-  EXPECT_LT(farthest_off_a_face, 0.05) << "a stray point is left";
+  // Strays stand 0.5 m or more off every face. The measured surface rounds the room's corners
+  // where its points lie 6 cm apart: corner points move up to 5 cm (denoised_surface.h).
+  std::printf("[ terrestrial room ] farthest point off every face %.3f m\n", farthest_off_a_face);
+  EXPECT_LT(farthest_off_a_face, 0.25) << "a stray point is left";
 
   const AgainstReference r = against_reference(cloud, Material::preset("marble", 1.3, 1000.0),
                                                 {{Eigen::Vector3d(0.3, 0.2, 1.0), 1.0}});
