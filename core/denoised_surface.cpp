@@ -107,29 +107,36 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
   Eigen::Matrix<double, 6, 1> coefficients = Eigen::Matrix<double, 6, 1>::Zero();
   // Least squares of the first `terms` coefficients with the weights; false when singular.
   const auto solve = [&](int terms) {
-    Eigen::MatrixXd normal_matrix = Eigen::MatrixXd::Zero(terms, terms);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(terms);
+    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
     for (std::size_t k = 0; k < m; ++k) {
       if (weight[k] <= 0.0) continue;
-      const auto b = basis[k].head(terms);
-      normal_matrix.noalias() += weight[k] * b * b.transpose();
-      rhs.noalias() += weight[k] * height[k] * b;
+      normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
+      rhs.noalias() += weight[k] * height[k] * basis[k];
     }
-    const Eigen::LDLT<Eigen::MatrixXd> solver(normal_matrix);
-    if (solver.info() != Eigen::Success) return false;
-    const Eigen::VectorXd solved = solver.solve(rhs);
-    if (!solved.allFinite()) return false;
     coefficients.setZero();
-    coefficients.head(terms) = solved;
+    if (terms == 6) {
+      const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(normal_matrix);
+      if (solver.info() != Eigen::Success) return false;
+      coefficients = solver.solve(rhs);
+    } else {
+      const Eigen::LDLT<Eigen::Matrix3d> solver(normal_matrix.topLeftCorner<3, 3>());
+      if (solver.info() != Eigen::Success) return false;
+      coefficients.head<3>() = solver.solve(rhs.head<3>());
+    }
+    if (!coefficients.allFinite()) return false;
     for (std::size_t k = 0; k < m; ++k) residual[k] = height[k] - basis[k].dot(coefficients);
     return true;
   };
+  thread_local std::vector<double> magnitude;
   const auto robust_noise = [&](bool only_weighted) {
-    std::vector<double> magnitude;
-    magnitude.reserve(m);
+    magnitude.clear();
     for (std::size_t k = 0; k < m; ++k)
       if (!only_weighted || weight[k] > 0.0) magnitude.push_back(std::fabs(residual[k]));
-    return 1.4826 * median_of(magnitude);
+    if (magnitude.empty()) return 0.0;
+    const auto middle = magnitude.begin() + static_cast<long>(magnitude.size() / 2);
+    std::nth_element(magnitude.begin(), middle, magnitude.end());
+    return 1.4826 * *middle;
   };
   // Weights from the residuals: the biweight, or (hard) 1 inside tau and 0 beyond.
   const auto weigh = [&](double tau, bool hard) {

@@ -1,6 +1,7 @@
 // Scans with depth noise render the surface they measured, not the noise: flat walls sampled at
 // random with Gaussian depth noise from 0 to one spacing, loaded as sss_render loads a PCD
-// (normals estimated), against the flat closed form, GPU path and reference.
+// (normals estimated), against the flat closed form, and a ball over a noisy floor still
+// casting its shadow; GPU path and reference.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,24 +21,31 @@
 namespace sss::test {
 namespace {
 
+// A PCD of `points` seen from a sensor 2 m above the origin, so that the normals sss_render
+// estimates face +z.
+std::string write_pcd(const std::string& path, const std::vector<Eigen::Vector3d>& points) {
+  std::ofstream pcd(path);
+  pcd << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH "
+      << points.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 2000 1 0 0 0\nPOINTS " << points.size()
+      << "\nDATA ascii\n";
+  for (const Eigen::Vector3d& p : points) pcd << p.x() << " " << p.y() << " " << p.z() << "\n";
+  return path;
+}
+
 // A square wall in the plane z = 0 (mm), `side` across, points placed at random with one
 // point per spacing^2 on average (a depth camera's pixel pitch), each moved along z by
-// Gaussian noise of standard deviation `noise`; written as a PCD seen from a sensor above it,
-// so that the normals sss_render estimates face +z.
-std::string write_noisy_wall(const std::string& path, double side, double spacing, double noise,
-                             unsigned seed) {
-  std::mt19937 random(seed);
+// Gaussian noise of standard deviation `noise`.
+std::vector<Eigen::Vector3d> noisy_wall(double side, double spacing, double noise,
+                                        std::mt19937& random) {
   std::uniform_real_distribution<double> across(-0.5 * side, 0.5 * side);
   std::normal_distribution<double> depth(0.0, 1.0);
-  const long count = std::lround(side * side / (spacing * spacing));
-  std::ofstream pcd(path);
-  pcd << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " << count
-      << "\nHEIGHT 1\nVIEWPOINT 0 0 2000 1 0 0 0\nPOINTS " << count << "\nDATA ascii\n";
-  for (long i = 0; i < count; ++i) {
+  std::vector<Eigen::Vector3d> points(
+    static_cast<std::size_t>(std::lround(side * side / (spacing * spacing))));
+  for (Eigen::Vector3d& p : points) {
     const double x = across(random), y = across(random);
-    pcd << x << " " << y << " " << noise * depth(random) << "\n";
+    p = Eigen::Vector3d(x, y, noise * depth(random));
   }
-  return path;
+  return points;
 }
 
 struct WallError {
@@ -89,9 +97,10 @@ TEST_P(NoisyWall, MeetsTheFlatClosedForm) {
   const NoisyWallCase& c = GetParam();
   constexpr double kSide = 600.0, kSpacing = 3.4, kCentre = 60.0;
   const double noise = c.noise_in_spacings * kSpacing;
-  const std::string path = write_noisy_wall(
-    "noisy_wall_" + std::to_string(static_cast<int>(100 * c.noise_in_spacings)) + ".pcd", kSide,
-    kSpacing, noise, 7);
+  std::mt19937 random(7);
+  const std::string path = write_pcd(
+    "noisy_wall_" + std::to_string(static_cast<int>(100 * c.noise_in_spacings)) + ".pcd",
+    noisy_wall(kSide, kSpacing, noise, random));
   SurfelCloud cloud = cli::load_cloud(path).cloud;
   assign_splat_radii(cloud);
   cloud.validate();
@@ -129,6 +138,75 @@ INSTANTIATE_TEST_SUITE_P(
       return std::string(info.param.material) + "_noise" +
              std::to_string(static_cast<int>(100 * info.param.noise_in_spacings));
     });
+
+
+// A ball of radius 40 mm held 100 mm (centre) over a noisy floor, both with depth noise of one
+// spacing (3.4 mm), marble, lit from straight above: the ball's shadow on the floor is a disc of
+// radius 40 mm. Inside it, two diffusion lengths (the longest channel's 1/s_tr) from its edge,
+// every floor receiver's B is below 10 % of the lit floor's mean (two diffusion lengths out);
+// the radial profile crosses half the lit level within two diffusion lengths of the geometric
+// edge. GPU path and reference.
+TEST(NoisyFloor, BallStillCastsItsShadow) {
+  constexpr double kSide = 400.0, kSpacing = 3.4, kBall = 40.0, kHeight = 100.0;
+  std::mt19937 random(11);
+  std::vector<Eigen::Vector3d> points = noisy_wall(kSide, kSpacing, kSpacing, random);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const auto on_ball = static_cast<std::size_t>(4 * M_PI * kBall * kBall / (kSpacing * kSpacing));
+  for (std::size_t k = 0; k < on_ball; ++k) {
+    const Eigen::Vector3d u = Eigen::Vector3d(gauss(random), gauss(random), gauss(random)).normalized();
+    points.push_back(Eigen::Vector3d(0, 0, kHeight) + (kBall + kSpacing * gauss(random)) * u);
+  }
+  SurfelCloud cloud = cli::load_cloud(write_pcd("ball_over_noisy_floor.pcd", points)).cloud;
+  assign_splat_radii(cloud);
+  cloud.validate();
+  const Material material = Material::preset("marble", 1.3);
+  const Dipole dipole(material);
+  double diffusion_length = 0.0;
+  for (const auto& channel : dipole.channel)
+    diffusion_length = std::max(diffusion_length, 1.0 / channel.s_tr);
+  const Light light{Eigen::Vector3d(0, 0, 1), 1.0};
+  std::vector<std::size_t> floor;  // receivers on the floor within 150 mm of the centre
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (cloud.positions[i].z() < 0.5 * kHeight - kBall && cloud.positions[i].head<2>().norm() < 150.0)
+      floor.push_back(i);
+  GpuScene scene(cloud, material, {light});
+  const std::vector<Rgb> gpu = scene.render_B();
+  ASSERT_EQ(gpu.size(), cloud.size());
+  ReferenceSettings settings;
+  settings.receivers = floor;
+  const std::vector<Rgb> reference = render_reference(cloud, material, {light}, settings).B;
+  for (const auto& [name, B] : {std::pair{"gpu", &gpu}, std::pair{"reference", &reference}}) {
+    const auto luminance = [&](std::size_t i) { return ((*B)[i][0] + (*B)[i][1] + (*B)[i][2]) / 3; };
+    double lit = 0.0, darkest_inside = 0.0;
+    std::size_t lit_count = 0;
+    for (std::size_t i : floor)
+      if (cloud.positions[i].head<2>().norm() > kBall + 2 * diffusion_length) {
+        lit += luminance(i);
+        ++lit_count;
+      }
+    lit /= static_cast<double>(lit_count);
+    for (std::size_t i : floor)
+      if (cloud.positions[i].head<2>().norm() < kBall - 2 * diffusion_length)
+        darkest_inside = std::max(darkest_inside, luminance(i) / lit);
+    // The profile's half-level radius: the mean radius of receivers between 40 % and 60 %.
+    double edge = 0.0;
+    std::size_t edge_count = 0;
+    for (std::size_t i : floor) {
+      const double level = luminance(i) / lit;
+      if (level > 0.4 && level < 0.6) {
+        edge += cloud.positions[i].head<2>().norm();
+        ++edge_count;
+      }
+    }
+    edge /= static_cast<double>(std::max<std::size_t>(edge_count, 1));
+    std::printf("[ noisy floor ] %-9s: shadow's brightest receiver %.2f %% of the lit floor, "
+                "half level at %.1f mm (geometric edge %.0f mm, diffusion length %.1f mm)\n",
+                name, 100 * darkest_inside, edge, kBall, diffusion_length);
+    EXPECT_LT(darkest_inside, 0.1) << name;
+    ASSERT_GT(edge_count, 0u) << name;
+    EXPECT_NEAR(edge, kBall, 2 * diffusion_length) << name;
+  }
+}
 
 }  // namespace
 }  // namespace sss::test
