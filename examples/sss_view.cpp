@@ -45,6 +45,8 @@ options (default in brackets)
   --memory-cap MIB     largest memory the file or --samples may claim [half the physical memory]
   --isolated R|keep    leave out points whose mean distance to their 16 nearest exceeds R
                        times that of those neighbours (stray returns, flying pixels) [5]
+  --denoise on|off     points onto the surface they measured, sized from the depth noise
+                       measured around each, normals from it (sss_render --help) [on]
   --fit surface|all    first frame holds 99 % of the points (surface) or all of them, as
                        PCL's reset (all; the r key resets so) [surface]
   --size WxH           window size in pixels [1024x768]
@@ -71,6 +73,7 @@ struct Options {
   std::size_t samples = 0;
   std::size_t memory_cap = 0;  // 0: the loader's default
   double isolation_ratio = 5.0;  // 0: isolated points kept
+  bool denoise = true;
   bool fit_all = false;
   int width = 1024, height = 768;
   std::string keys;
@@ -100,6 +103,8 @@ Options parse(int argc, char** argv) {
       o.memory_cap = sss::cli::memory_cap(flag, value());
     } else if (flag == "--isolated") {
       o.isolation_ratio = sss::cli::isolation_ratio(flag, value());
+    } else if (flag == "--denoise") {
+      o.denoise = sss::cli::on_off(flag, value());
     } else if (flag == "--fit") {
       o.fit_all = sss::cli::fit_all(flag, value());
     } else if (flag == "--size") {
@@ -223,6 +228,7 @@ int run(const Options& o) {
   settings.quality = o.quality;
   settings.surfels.drop_isolated = o.isolation_ratio > 0.0;
   if (settings.surfels.drop_isolated) settings.surfels.isolation_ratio = o.isolation_ratio;
+  settings.surfels.denoise = o.denoise;
   sss::TranslucentCloud::Ptr cloud;
   if (o.input.empty()) {
     cloud = sss::addTranslucentCloud(pcl_viewer, torus(), "cloud", settings);

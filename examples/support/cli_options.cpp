@@ -277,10 +277,7 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--isolated") {
       o.isolation_ratio = isolation_ratio(flag, value());
     } else if (flag == "--denoise") {
-      const std::string v = value();
-      if (v != "on" && v != "off")
-        throw std::invalid_argument(flag + ": '" + v + "' is neither on nor off");
-      o.denoise = v == "on";
+      o.denoise = on_off(flag, value());
     } else if (flag == "--grid-level") {
       o.grid_level = whole(flag, value(), 0, 10);
     } else if (flag == "--max-map") {
@@ -346,6 +343,12 @@ bool fit_all(const std::string& flag, const std::string& text) {
   if (text != "surface" && text != "all")
     throw std::invalid_argument(flag + ": needs surface or all, not '" + text + "'");
   return text == "all";
+}
+
+bool on_off(const std::string& flag, const std::string& text) {
+  if (text != "on" && text != "off")
+    throw std::invalid_argument(flag + ": needs on or off, not '" + text + "'");
+  return text == "on";
 }
 
 double isolation_ratio(const std::string& flag, const std::string& text) {

@@ -106,6 +106,8 @@ double number(const std::string& flag, const std::string& text);
 std::size_t count(const std::string& flag, const std::string& text, double hi);
 // --fit's value: true for all, false for surface.
 bool fit_all(const std::string& flag, const std::string& text);
+// on: true, off: false (--denoise).
+bool on_off(const std::string& flag, const std::string& text);
 // --isolated's value: the ratio, or 0 for keep.
 double isolation_ratio(const std::string& flag, const std::string& text);
 // --memory-cap's value, MiB, in bytes.

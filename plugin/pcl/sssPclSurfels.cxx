@@ -197,6 +197,9 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
   normal_array->SetName("Normals");
   normal_array->SetNumberOfComponents(3);
   normal_array->SetNumberOfTuples(static_cast<vtkIdType>(kept.size()));
+  vtkNew<vtkFloatArray> noise_array;  // the depth noise measured around each point
+  noise_array->SetName("Noise");
+  if (s.denoised) noise_array->SetNumberOfTuples(static_cast<vtkIdType>(kept.size()));
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("Colors");
   colours->SetNumberOfComponents(3);
@@ -208,6 +211,7 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
     points->SetPoint(id, surface.positions[k].data());
     const Eigen::Vector3f n = normals[k].normalized();
     normal_array->SetTuple3(id, n.x(), n.y(), n.z());
+    if (s.denoised) noise_array->SetValue(id, surface.noise[k]);
     if constexpr (pcl::traits::has_color_v<PointT>)
       if (s.has_colours) colours->SetTuple3(id, p.r, p.g, p.b);
   }
@@ -215,6 +219,7 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
   s.polydata->SetPoints(points);
   s.polydata->GetPointData()->SetNormals(normal_array);
   if (s.has_colours) s.polydata->GetPointData()->SetScalars(colours);
+  if (s.denoised) s.polydata->GetPointData()->AddArray(noise_array);
   return s;
 }
 

@@ -50,7 +50,8 @@ struct SurfelOptions {
 
 struct Surfels {
   // Double-precision points (georeferenced coordinates keep their digits), "Normals"
-  // (float, unit) and, when the cloud has colours, "Colors" (unsigned char RGB) as scalars.
+  // (float, unit), when the cloud has colours "Colors" (unsigned char RGB) as scalars, and
+  // when denoised "Noise" (float, scene units: the depth noise measured around each point).
   vtkSmartPointer<vtkPolyData> polydata;
   double spacing = 0.0;  // mean distance to the nearest other point, scene units
   bool has_colours = false;
