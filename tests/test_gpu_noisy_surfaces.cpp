@@ -48,6 +48,26 @@ std::vector<Eigen::Vector3d> noisy_wall(double side, double spacing, double nois
   return points;
 }
 
+// The cloud as sss_render loads a PCD: on its measured surface, with sss_render's radii.
+SurfelCloud load_as_sss_render(const std::string& path) {
+  SurfelCloud cloud = cli::load_cloud(path).cloud;
+  assign_splat_radii(cloud);
+  cloud.validate();
+  return cloud;
+}
+
+// B by the GPU path's defaults at every surfel and by the reference at `receivers`, named.
+std::vector<std::pair<const char*, std::vector<Rgb>>> gpu_and_reference(
+    const SurfelCloud& cloud, const Material& material, const Light& light,
+    const std::vector<std::size_t>& receivers) {
+  GpuScene scene(cloud, material, {light});
+  std::vector<Rgb> gpu = scene.render_B();
+  ReferenceSettings settings;
+  settings.receivers = receivers;
+  return {{"gpu", std::move(gpu)},
+          {"reference", render_reference(cloud, material, {light}, settings).B}};
+}
+
 struct WallError {
   double mean = 0.0, p99 = 0.0, mean_ratio = 0.0, below_half = 0.0;
 };
@@ -101,9 +121,7 @@ TEST_P(NoisyWall, MeetsTheFlatClosedForm) {
   const std::string path = write_pcd(
     "noisy_wall_" + std::to_string(static_cast<int>(100 * c.noise_in_spacings)) + ".pcd",
     noisy_wall(kSide, kSpacing, noise, random));
-  SurfelCloud cloud = cli::load_cloud(path).cloud;
-  assign_splat_radii(cloud);
-  cloud.validate();
+  const SurfelCloud cloud = load_as_sss_render(path);
   const Material material = Material::preset(c.material, 1.3);
   ASSERT_LT(Dipole(material).max_support_radius(1e-3) + kCentre, 0.5 * kSide);
   const Light light{Eigen::Vector3d(std::sqrt(0.5), 0.0, std::sqrt(0.5)), 1.0};
@@ -112,14 +130,9 @@ TEST_P(NoisyWall, MeetsTheFlatClosedForm) {
     if (cloud.positions[i].head<2>().norm() < kCentre) receivers.push_back(i);
   ASSERT_GT(receivers.size(), 500u);
 
-  GpuScene scene(cloud, material, {light});
-  const std::vector<Rgb> gpu = scene.render_B();
-  ASSERT_EQ(gpu.size(), cloud.size());
-  ReferenceSettings settings;
-  settings.receivers = receivers;
-  const std::vector<Rgb> reference = render_reference(cloud, material, {light}, settings).B;
-  for (const auto& [name, B] : {std::pair{"gpu", &gpu}, std::pair{"reference", &reference}}) {
-    const WallError e = against_flat_closed_form(*B, cloud, receivers, material, light);
+  for (const auto& [name, B] : gpu_and_reference(cloud, material, light, receivers)) {
+    ASSERT_EQ(B.size(), cloud.size()) << name;
+    const WallError e = against_flat_closed_form(B, cloud, receivers, material, light);
     std::printf("[ noisy wall ] %-8s noise %.2f spacings (%.2f mm), %-9s: mean %.2f %%, p99 "
                 "%.2f %%, mean ratio %.4f, below half %.2f %% of %zu receivers\n",
                 c.material, c.noise_in_spacings, noise, name, 100 * e.mean, 100 * e.p99,
@@ -156,9 +169,7 @@ TEST(NoisyFloor, BallStillCastsItsShadow) {
     const Eigen::Vector3d u = Eigen::Vector3d(gauss(random), gauss(random), gauss(random)).normalized();
     points.push_back(Eigen::Vector3d(0, 0, kHeight) + (kBall + kSpacing * gauss(random)) * u);
   }
-  SurfelCloud cloud = cli::load_cloud(write_pcd("ball_over_noisy_floor.pcd", points)).cloud;
-  assign_splat_radii(cloud);
-  cloud.validate();
+  const SurfelCloud cloud = load_as_sss_render(write_pcd("ball_over_noisy_floor.pcd", points));
   const Material material = Material::preset("marble", 1.3);
   const Dipole dipole(material);
   double diffusion_length = 0.0;
@@ -169,14 +180,9 @@ TEST(NoisyFloor, BallStillCastsItsShadow) {
   for (std::size_t i = 0; i < cloud.size(); ++i)
     if (cloud.positions[i].z() < 0.5 * kHeight - kBall && cloud.positions[i].head<2>().norm() < 150.0)
       floor.push_back(i);
-  GpuScene scene(cloud, material, {light});
-  const std::vector<Rgb> gpu = scene.render_B();
-  ASSERT_EQ(gpu.size(), cloud.size());
-  ReferenceSettings settings;
-  settings.receivers = floor;
-  const std::vector<Rgb> reference = render_reference(cloud, material, {light}, settings).B;
-  for (const auto& [name, B] : {std::pair{"gpu", &gpu}, std::pair{"reference", &reference}}) {
-    const auto luminance = [&](std::size_t i) { return ((*B)[i][0] + (*B)[i][1] + (*B)[i][2]) / 3; };
+  for (const auto& [name, B] : gpu_and_reference(cloud, material, light, floor)) {
+    ASSERT_EQ(B.size(), cloud.size()) << name;
+    const auto luminance = [&](std::size_t i) { return (B[i][0] + B[i][1] + B[i][2]) / 3; };
     double lit = 0.0, darkest_inside = 0.0;
     std::size_t lit_count = 0;
     for (std::size_t i : floor)
