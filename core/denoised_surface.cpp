@@ -42,7 +42,7 @@ constexpr double kTukey = 4.685;
 
 struct PatchFit {
   Eigen::Vector3d position, normal;
-  double noise = 0.0;  // 1.4826 MAD of the residuals over the k - 6 degrees of freedom
+  double noise = 0.0;  // RMS of the last fit's residuals over its k - 6 degrees of freedom
 };
 
 double median_of(std::vector<double> values) {
@@ -97,8 +97,10 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
   }
   // Neighbours along a line (or at one place) span no plane: no normal.
   Eigen::Matrix2d spread = Eigen::Matrix2d::Zero();
-  for (std::size_t k = 0; k < m; ++k) spread += basis[k].segment<2>(1) * basis[k].segment<2>(1).transpose();
-  const Eigen::Vector2d extent = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(spread).eigenvalues();
+  for (std::size_t k = 0; k < m; ++k)
+    spread += basis[k].segment<2>(1) * basis[k].segment<2>(1).transpose();
+  const Eigen::Vector2d extent =
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(spread).eigenvalues();
   if (!(extent[0] > 1e-4 * extent[1])) {
     fit.normal.setZero();
     return fit;
@@ -277,7 +279,8 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
     report->median_neighbours = counts[n / 2];
     report->largest_neighbours = *std::max_element(counts.begin(), counts.end());
     for (std::size_t i = 0; i < n; ++i)
-      report->largest_shift = std::max(report->largest_shift, (out.positions[i] - positions[i]).norm());
+      report->largest_shift =
+        std::max(report->largest_shift, (out.positions[i] - positions[i]).norm());
   }
   return out;
 }

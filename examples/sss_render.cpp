@@ -86,7 +86,7 @@ struct Timings {
 };
 
 // What the load left out as isolated and the noise it measured (cloud_input.h).
-struct Isolation {
+struct LoadFindings {
   std::size_t left_out = 0;
   double largest_ratio = 0.0;
   bool denoised = false;
@@ -94,7 +94,7 @@ struct Isolation {
 };
 
 void write_stats(const Options& o, const sss::Material& m, const sss::SurfelCloud& cloud,
-                 const Isolation& isolation, const std::vector<sss::Light>& lights,
+                 const LoadFindings& found, const std::vector<sss::Light>& lights,
                  vtkSubsurfacePass* pass,
                  const sss::cli::RendererInfo& renderer, const Timings& t,
                  const std::string& path) {
@@ -125,11 +125,11 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << (o.fit_all ? "all" : "surface") << "\"},\n"
         << "  \"isolated_points\": {\"ratio\": " << o.isolation_ratio
         << ", \"neighbours\": " << sss::IsolationSettings{}.neighbours
-        << ", \"left_out\": " << isolation.left_out
-        << ", \"largest_ratio\": " << isolation.largest_ratio << "},\n"
-        << "  \"measured_surface\": {\"denoised\": " << (isolation.denoised ? "true" : "false")
-        << ", \"noise_median\": " << isolation.noise_median
-        << ", \"noise_p90\": " << isolation.noise_p90 << "},\n"
+        << ", \"left_out\": " << found.left_out
+        << ", \"largest_ratio\": " << found.largest_ratio << "},\n"
+        << "  \"measured_surface\": {\"denoised\": " << (found.denoised ? "true" : "false")
+        << ", \"noise_median\": " << found.noise_median
+        << ", \"noise_p90\": " << found.noise_p90 << "},\n"
         << "  \"counts\": {\"surfels\": " << cloud.size()
         << ", \"lit_cells\": " << pass->GetLastLitCells()
         << ", \"near_field_entries\": " << pass->GetLastNearFieldEntries()
@@ -178,14 +178,14 @@ int run(const Options& o) {
       o.custom_material ? sss::Material::custom(o.sigma_a, o.sigma_s, o.eta, o.scale)
                         : sss::Material::preset(o.material, o.eta, o.scale);
   sss::SurfelCloud cloud;
-  Isolation isolation;
+  LoadFindings found;
   if (o.input.empty()) {
     cloud = sss::make_torus(30.0, 7.0, 0.6);  // mm; its 7 mm tube glows when lit from behind
     cloud.validate();
   } else {
     sss::cli::LoadedCloud loaded =
       sss::cli::load_cloud(o.input, o.mesh_samples, o.memory_cap, o.isolation_ratio, o.denoise);
-    isolation = {loaded.isolated, loaded.largest_isolation, loaded.denoised, loaded.noise_median,
+    found = {loaded.isolated, loaded.largest_isolation, loaded.denoised, loaded.noise_median,
                  loaded.noise_p90};
     std::fprintf(stderr, "%s\n", loaded.description.c_str());
     cloud = std::move(loaded.cloud);
@@ -282,7 +282,7 @@ int run(const Options& o) {
   if (o.method == "gpu" && scene.pass->GetSurfelRuns() > 0)
     std::fprintf(stderr, "last light move: %s\n", scene.pass->GetLastLightMoveProfile().c_str());
   if (!o.stats_json.empty())
-    write_stats(o, material, cloud, isolation, lights, pass, renderer, timings, o.stats_json);
+    write_stats(o, material, cloud, found, lights, pass, renderer, timings, o.stats_json);
   std::fprintf(stderr, "wrote %s (first frame %.3f s, camera-only frame %.3f s)\n",
                o.output_png.c_str(), timings.first_frame, timings.camera_frame);
   return 0;
