@@ -16,7 +16,7 @@
  *     field (out to two disc radii) comes from a table of weights on the neighbours' irradiance
  *     that only the geometry and the material change; the far field, where the kernel reaches
  *     farther, from a walk of the lit cells' pyramid. The CPU reference
- *     (core/reference_renderer.h) computes the same model at higher precision;
+ *     (core/reference/reference_renderer.h) computes the same model at higher precision;
  *  3. the camera view: Lo = Ft(eta, wo) B per surfel (eq. 14), tone mapped in the composite.
  * The table is rebuilt when the geometry, the material or a setting changes; steps 1-2 run
  * when a light changes; a camera move runs step 3 alone. Other actors draw as before.
@@ -250,7 +250,7 @@ protected:
   vtkSubsurfacePass();
   ~vtkSubsurfacePass() override;
 
-  // Their defaults are core/quality_settings.h's, set by the constructor.
+  // Their defaults are core/settings/quality_settings.h's, set by the constructor.
   int KernelStrategy;
   double TexelPerRadius;
   int MaxMapSize;

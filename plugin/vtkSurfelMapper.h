@@ -173,7 +173,7 @@ protected:
 
   double Radius = 0.0;
   double RadiusScale = 1.0;
-  double CoverageTarget;  // core/splat_coverage.h's default, set by the constructor
+  double CoverageTarget;  // core/view/splat_coverage.h's default, set by the constructor
   int RadiusMode = AUTOMATIC;
   std::string RadiusArrayName;
   int Splatting = BLENDED;

@@ -8,4 +8,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
-./build/examples/sss_bench --out docs/benchmark "$@"
+./build/programs/sss_bench --out docs/benchmark "$@"

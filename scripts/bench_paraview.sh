@@ -14,7 +14,7 @@ frames="${2:-3}"
 mkdir -p "$out"
 cloud() {  # name, file, material, mm per unit: a .vtp with the PCL glue's normals
   [ -f "$out/$1.vtp" ] && return 0
-  build/examples/sss_render "$data/$2" --scale "$4" --material "$3" --size 64x64 \
+  build/programs/sss_render "$data/$2" --mm-per-unit "$4" --material "$3" --size 64x64 \
     --output "$out/$1_bake.png" --bake "$out/$1.ply" > "$out/$1_bake.log" 2>&1
   bash scripts/pvbatch.sh examples/paraview/baked_to_vtp.py "$out/$1.ply" "$out/$1.vtp" \
     2>&1 | grep wrote

@@ -30,7 +30,7 @@ needs it):
   near_field_mib  GPU memory of the near-field table, MiB
   virtual_points  virtual grid points kept after pruning (paper)
   lit_cells       surfel cells the light reaches (near-far), or lit map texels (paper)
-  err_mean        per-point relative error against the CPU reference (core/error_metric.h):
+  err_mean        per-point relative error against the CPU reference (core/reference/error_metric.h):
   err_p99           mean, 99th percentile and max, as fractions (0.01 = 1 %)
   err_max
   err8_mean       mean and max difference of 8-bit sRGB values (0-255)

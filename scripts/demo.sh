@@ -6,5 +6,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
-env -u DISPLAY ./build/examples/sss_render --light-dir 0.2,1,-0.3 --view-dir 0,-1,0.5 \
+env -u DISPLAY ./build/programs/sss_render --light-dir 0.2,1,-0.3 --view-dir 0,-1,0.5 \
   --output demo.png --linear demo.pfm --bake demo.ply --stats demo.json "$@"

@@ -1,5 +1,5 @@
 // Test support for the GPU path: a headless (EGL) scene with one translucent surfel actor,
-// built from the programs' shared pieces (examples/support).
+// built from the programs' shared pieces (programs/support).
 #pragma once
 
 #include <vtkActor.h>

@@ -1,4 +1,4 @@
-// The denoised surface (core/denoised_surface.h) on cases with known answers: a plane and a
+// The denoised surface (core/surfels/denoised_surface.h) on cases with known answers: a plane and a
 // sphere sampled at random with Gaussian depth noise.
 #include <gtest/gtest.h>
 

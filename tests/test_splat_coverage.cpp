@@ -1,4 +1,4 @@
-// Splat radii from measured coverage (core/splat_coverage.h) against closed forms: a disc
+// Splat radii from measured coverage (core/view/splat_coverage.h) against closed forms: a disc
 // inside a square, the hexagonal lattice's covering radius, the void probability of a Poisson
 // sampling, and a terrestrial scanner's rings, whose density falls with range.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The automatic camera (core/view_fit.h): it holds the asked fraction of the points, centred,
+// The automatic camera (core/view/view_fit.h): it holds the asked fraction of the points, centred,
 // fills the frame along its limiting axis, and a few far strays do not shrink the surface.
 #include <gtest/gtest.h>
 

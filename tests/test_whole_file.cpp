@@ -1,4 +1,4 @@
-// Outputs written whole or not at all (core/whole_file.h): a process killed in the middle of
+// Outputs written whole or not at all (core/support/whole_file.h): a process killed in the middle of
 // a write leaves the old file, or none, never a part of the new one; a failed write keeps the
 // old file and leaves no temporary behind.
 #include <gtest/gtest.h>

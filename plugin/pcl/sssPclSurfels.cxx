@@ -116,7 +116,7 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
     source[kept_finite++] = source[k];
   }
   source.resize(kept_finite);
-  // The surface the scan measured (core/denoised_surface.h): points on it, its normals.
+  // The surface the scan measured (core/surfels/denoised_surface.h): points on it, its normals.
   DenoiseSettings denoising;
   denoising.enabled = options.denoise;
   denoising.normal_tolerance = options.normal_tolerance;

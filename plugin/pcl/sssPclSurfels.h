@@ -1,5 +1,5 @@
 // A PCL cloud as surfels for vtkSurfelMapper: finite points that stand on a surface (isolated
-// ones left out: core/isolated_points.h), unit normals (kept, or estimated
+// ones left out: core/surfels/isolated_points.h), unit normals (kept, or estimated
 // with NormalEstimationOMP over a neighbourhood taken from the spacing found with PCL's
 // kd-tree), and colours kept as per-point albedo. The disc radius is the mapper's: the one
 // that closes the surface (vtkSurfelMapper::SetCoverageTarget).
@@ -41,7 +41,7 @@ struct SurfelOptions {
   double isolation_ratio = 5.0;
   // Points moved onto the smooth surface fitted around each over a neighbourhood sized from the
   // depth noise measured there, the normals (when estimated) that surface's, so that a scan
-  // shows its surface and not its noise (core/denoised_surface.h); normal_tolerance is the
+  // shows its surface and not its noise (core/surfels/denoised_surface.h); normal_tolerance is the
   // normal's standard error in radians the neighbourhood is sized for. Off: the points as
   // given, normals by NormalEstimationOMP over normal_radius.
   bool denoise = true;

@@ -28,7 +28,7 @@ namespace sss {
 // How B is summed when a light, the geometry or the material changes (the camera alone never
 // re-runs it), trading accuracy for time. Costs and errors per setting are in
 // docs/benchmark/bench.md. Each is vtkSubsurfacePass's quality preset of the same name
-// (core/quality_settings.h); Balanced is the pass's defaults.
+// (core/settings/quality_settings.h); Balanced is the pass's defaults.
 enum class Quality { Interactive, Balanced, Accurate };
 const char* qualityName(Quality quality);
 // False for a name that is not a quality's.

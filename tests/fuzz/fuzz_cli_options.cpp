@@ -1,4 +1,4 @@
-// libFuzzer target: sss_render's option parsing (examples/support/cli_options.h) on any
+// libFuzzer target: sss_render's option parsing (programs/support/cli_options.h) on any
 // argument list, the bytes split at NUL into at most 64 arguments. A bad list must end in
 // std::invalid_argument; any other exception, a crash or a sanitizer report is a defect.
 #include <cstdint>

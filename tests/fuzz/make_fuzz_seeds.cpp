@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     std::ofstream(load / name, std::ios::binary) << form << text;
 
   const std::vector<std::vector<std::string>> lists = {
-    {"scan.pcd", "--scale", "1000", "--material", "marble", "--light-dir", "0.3,-0.5,-1"},
+    {"scan.pcd", "--mm-per-unit", "1000", "--material", "marble", "--light-dir", "0.3,-0.5,-1"},
     {"--size", "64x48", "--method", "reference", "--ortho", "--view-dir", "0,0,1", "--up", "0,1,0"},
     {"m.ply", "--samples", "1000", "--memory-cap", "512", "--strategy", "paper", "--grid-level", "6"},
     {"--sigma-a", "0.1,0.2,0.3", "--sigma-s", "1,2,3", "--eta", "1.5", "--max-map", "1024",

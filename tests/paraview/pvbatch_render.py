@@ -2,7 +2,7 @@
 pvbatch (one rank or `mpirun -np N pvbatch`), with the camera, light and tone mapping that
 sss_render uses, so that the two images can be compared.
 
-  pvbatch pvbatch_render.py PLUGIN CLOUD OUT.png [--material M] [--scale MM] [--size WxH]
+  pvbatch pvbatch_render.py PLUGIN CLOUD OUT.png [--material M] [--mm-per-unit MM] [--size WxH]
       [--view-dir X,Y,Z] [--up X,Y,Z] [--light-dir X,Y,Z] [--split N]
 
 CLOUD is a .ply or .vtp of points with normals. --split N cuts it along x into N pieces of
@@ -76,7 +76,7 @@ def main():
     p.add_argument("cloud")
     p.add_argument("output")
     p.add_argument("--material", default="marble")
-    p.add_argument("--scale", type=float, default=1.0)
+    p.add_argument("--mm-per-unit", type=float, default=1.0)
     p.add_argument("--size", default="400x400")
     p.add_argument("--view-dir", default="0,-1,0.6")
     p.add_argument("--up", default="0,0,1")
@@ -114,7 +114,7 @@ def main():
     display = Show(source, view)
     display.SetRepresentationType("Translucent Surfels")
     display.TranslucentMaterial = a.material
-    display.MillimetresPerUnit = a.scale
+    display.MillimetresPerUnit = a.mm_per_unit
     # sss_render's camera: looking at the bounds' centre along -view_dir, then fitted.
     source.UpdatePipeline()
     b = source.GetDataInformation().GetBounds()

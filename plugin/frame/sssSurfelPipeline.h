@@ -1,0 +1,65 @@
+// Step 2 on the GPU (the NEAR_FAR strategy), in order: the surfel list (sssSurfelList), each
+// surfel's cell lit through the light maps with its source pyramid (sssLitCells), the near
+// field from a table the light does not change (sssNearFieldTable) and the far field by a walk
+// of the lit cells' pyramid (sssFarField). The same model as the CPU reference
+// (core/reference/reference_renderer.h): the bake (cells, the near-field table, the surfel list) runs on
+// the CPU when the geometry, the material or a setting changes; a light move runs three GPU
+// passes per light and the near and far field's passes over all surfels.
+#ifndef sssSurfelPipeline_h
+#define sssSurfelPipeline_h
+
+#include "dipole.h"
+#include "local_surfels.h"
+#include "material.h"
+#include "near_far_split.h"
+#include "quality_settings.h"
+#include "sssLightMaps.h"
+#include "sssStep2.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace sss
+{
+
+class SurfelPipeline : public Step2
+{
+public:
+  SurfelPipeline();
+  ~SurfelPipeline() override;
+
+  // The CPU bake (cells, the near-field table, the surfel list) and its uploads.
+  bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
+    const Dipole& dipole, const QualitySettings& settings, StepReport& report,
+    std::string& error) override;
+  // Maps of the surfel each texel sees, texels TexelPerRadius of a disc radius.
+  LightMapRequest light_map_request(const QualitySettings& settings) const override;
+  // Irradiance, source pyramids and B at every surfel for the given light maps, handed to
+  // the view; with `finish` the report's seconds of each of these steps are exact.
+  bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
+    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+    std::string& error) override;
+  void release(vtkWindow* window) override;
+
+private:
+  struct Gpu;
+  std::unique_ptr<Gpu> gpu_;
+};
+
+}
+
+#endif

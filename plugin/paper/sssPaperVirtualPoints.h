@@ -1,0 +1,69 @@
+// Step 2 of the paper's method (the PAPER strategy): a grid of virtual points kept where the
+// surface is (core/paper/virtual_grid.h), B at each from 49 Gaussian taps of the light maps
+// (paper_taps_fs.glsl, gather_paper.glsl), stored in a 3-D texture that each surfel samples
+// trilinearly.
+#ifndef sssPaperVirtualPoints_h
+#define sssPaperVirtualPoints_h
+
+#include "sssGpuHelpers.h"
+#include "sssStep2.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+namespace sss
+{
+
+class Dipole;
+class VirtualGrid;
+struct LocalSurfels;
+struct ReceiverList;
+
+class PaperVirtualPoints : public Step2
+{
+public:
+  PaperVirtualPoints();
+  ~PaperVirtualPoints() override;
+
+  // The grid for these surfels: 2^GridLevel points per axis, 0 for the paper's 64.
+  bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
+    const Dipole& dipole, const QualitySettings& settings, StepReport& report,
+    std::string& error) override;
+  // The paper's maps: 512 texels a side, eq. 15 per texel.
+  LightMapRequest light_map_request(const QualitySettings& settings) const override;
+  // B at every virtual point from the maps, into the 3-D texture, then at each surfel.
+  bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
+    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+    std::string& error) override;
+  void release(vtkWindow* window) override;
+
+  const VirtualGrid& grid() const { return *grid_; }
+  vtkTextureObject* radiance() const { return radiance_; }  // 3-D, linear filtering
+  vtkTextureObject* gathered() const;  // B per virtual point, in their list's layout
+
+private:
+  std::unique_ptr<VirtualGrid> grid_;
+  std::unique_ptr<ReceiverList> receivers_;
+  vtkNew<vtkOpenGLBufferObject> grid_index_;
+  std::vector<std::pair<int, int>> slice_range_;  // first, count per k
+  vtkSmartPointer<vtkTextureObject> radiance_;
+  std::unique_ptr<vtkOpenGLQuadHelper> taps_quad_;
+  vtkNew<vtkOpenGLFramebufferObject> taps_fbo_, grid_fbo_;
+  ProgramVAO grid_vao_;
+};
+
+}
+
+#endif
