@@ -1,6 +1,7 @@
 #include "vtkSubsurfacePass.h"
 
 #include "sssGpuHelpers.h"
+#include "sssMaterialUniforms.h"
 #include "sssSceneLights.h"
 #include "sssTranslucentActors.h"
 #include "sss_composite_fs.h"
@@ -358,8 +359,8 @@ bool vtkSubsurfacePass::Composite(
 bool vtkSubsurfacePass::PreReplaceShaderValues(std::string& vertexShader, std::string&,
   std::string&, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  auto* actor = vtkActor::SafeDownCast(prop);
-  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Actors.is_ready(actor))
+  if (!vtkSurfelMapper::SafeDownCast(mapper) ||
+    !this->GivesRadianceTo(vtkActor::SafeDownCast(prop)))
   {
     return true;
   }
@@ -375,7 +376,7 @@ bool vtkSubsurfacePass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
-  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->Impl->Actors.is_ready(actor))
+  if (!vtkSurfelMapper::SafeDownCast(mapper) || !this->GivesRadianceTo(actor))
   {
     return true;
   }
@@ -384,13 +385,13 @@ bool vtkSubsurfacePass::SetShaderParameters(
   radiance->Activate();
   program->SetUniformi("surfelRadiance", radiance->GetTextureUnit());
   program->SetUniformi("surfelListWidth", state.list_width());
-  float eta[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    eta[c] = static_cast<float>(state.material().eta[c]);
-  }
-  program->SetUniform3f("eta", eta);
+  sss::set_eta_uniform(program, state.material());
   return true;
+}
+
+bool vtkSubsurfacePass::GivesRadianceTo(vtkActor* actor)
+{
+  return this->Impl->Actors.is_ready(actor);
 }
 
 void vtkSubsurfacePass::SetPrecomputedRadiance(vtkActor* actor, vtkFloatArray* B)

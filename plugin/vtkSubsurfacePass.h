@@ -161,6 +161,13 @@ public:
   bool GetSurfelRadiance(vtkActor* actor, vtkFloatArray* B);
 
   /**
+   * Whether the pass gives this actor's surfels their radiance in the frame being drawn (the
+   * actor carries a material and its steps are ready): vtkSurfelMapper then draws them as
+   * translucent, with the pass's shader replacements.
+   */
+  bool GivesRadianceTo(vtkActor* actor);
+
+  /**
    * Shows the given B per input point (3 components, e.g. from the CPU reference) for this
    * actor instead of computing it; nullptr goes back to computing. Points left out by the
    * mapper are skipped.

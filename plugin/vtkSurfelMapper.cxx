@@ -2,6 +2,7 @@
 
 #include "sssGpuHelpers.h"
 #include "sssSurfelPreparation.h"
+#include "vtkSubsurfacePass.h"
 #include "sss_dipole.h"
 #include "sss_surfel_fs.h"
 #include "sss_surfel_normalise_fs.h"
@@ -59,6 +60,9 @@ struct vtkSurfelMapper::Internals
   bool WarnedBlit = false;
   std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
 
+  // The prepared surfels as vertex buffers: positions relative to the bounds centre.
+  void BuildBufferObjects(const sss::PreparedSurfels& prepared);
+
   void ReleaseSplatBuffers(vtkWindow* window)
   {
     sss::release_held(window, this->SplatDepth, this->WeightedColour, this->WeightedNormal);
@@ -66,6 +70,34 @@ struct vtkSurfelMapper::Internals
     this->Normalise.reset();
   }
 };
+
+void vtkSurfelMapper::Internals::BuildBufferObjects(const sss::PreparedSurfels& prepared)
+{
+  const std::size_t n = prepared.cloud.size();
+  const bool perPoint = prepared.per_point_radii;
+  std::vector<float> positions(3 * n), normals(3 * n), radii(perPoint ? n : 1, 0.0f);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      positions[3 * i + c] = static_cast<float>(prepared.cloud.positions[i][c] - prepared.centre[c]);
+      normals[3 * i + c] = static_cast<float>(prepared.cloud.normals[i][c]);
+    }
+    if (perPoint)
+    {
+      radii[i] = static_cast<float>(prepared.cloud.radii[i]);
+    }
+  }
+  this->Positions->Upload(positions, vtkOpenGLBufferObject::ArrayBuffer);
+  this->Normals->Upload(normals, vtkOpenGLBufferObject::ArrayBuffer);
+  this->Colours->Upload(prepared.rgba, vtkOpenGLBufferObject::ArrayBuffer);
+  this->Radii->Upload(radii, vtkOpenGLBufferObject::ArrayBuffer);
+  this->UploadTime.Modified();
+  for (auto& bound : this->BoundProgram)
+  {
+    bound = nullptr;
+  }
+}
 
 vtkSurfelMapper::vtkSurfelMapper()
   : Impl(new Internals)
@@ -75,8 +107,38 @@ vtkSurfelMapper::vtkSurfelMapper()
 
 vtkSurfelMapper::~vtkSurfelMapper() = default;
 
+namespace sss
+{
+// What one frame's splat draws share: the matrices (in double until the model is shifted to
+// its bounds centre, so georeferenced coordinates keep their precision in the float buffers),
+// the sizes in view units and whether a pass gives the surfels their radiance.
+struct SplatView
+{
+  Eigen::Matrix4f modelToView, viewToClip;
+  Eigen::Matrix3f normalToView;
+  double scale = 1.0;       // model to view, per unit of length
+  bool orthographic = false;
+  double pixelSpan = 0.0;   // a pixel in view units (orthographic) or per unit of distance
+  float look[3] = { 0, 0, 0 };  // the plain look: ambient, diffuse, opacity
+  float radiusVC = 0, blendDepthVC = 0;
+  bool perPoint = false;
+  std::size_t surfels = 0, drawn = 0;  // all of them, and those this piece owns (first)
+  std::vector<vtkOpenGLRenderPass*> passes;
+  bool translucent = false;  // a vtkSubsurfacePass gives the radiance
+};
+}
+
 namespace
 {
+// One surfel draw: hard discs, the blended splats' visibility or their accumulation
+// (surfel_fs.glsl's SPLAT_PASS).
+enum SplatPass
+{
+  SPLAT_DISCS = 0,
+  SPLAT_VISIBILITY = 1,
+  SPLAT_ACCUMULATION = 2
+};
+
 Eigen::Matrix4d ToEigen(vtkMatrix4x4* m)
 {
   Eigen::Matrix4d e;
@@ -116,6 +178,47 @@ void RemoveHooks(std::string& source)
   {
     vtkShaderProgram::Substitute(source, hook, "", true);
   }
+}
+
+sss::SplatView MakeSplatView(
+  vtkRenderer* ren, vtkActor* act, const sss::PreparedSurfels& prepared, double blendDepth)
+{
+  sss::SplatView view;
+  vtkCamera* camera = ren->GetActiveCamera();
+  int width, height, x0, y0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  const double aspect = height > 0 ? double(width) / height : 1.0;
+  Eigen::Matrix4d shift = Eigen::Matrix4d::Identity();
+  shift.block<3, 1>(0, 3) =
+    Eigen::Vector3d(prepared.centre[0], prepared.centre[1], prepared.centre[2]);
+  const Eigen::Matrix4d modelView =
+    ToEigen(camera->GetModelViewTransformMatrix()) * ToEigen(act->GetMatrix());
+  view.modelToView = (modelView * shift).cast<float>();
+  const Eigen::Matrix3d linear = modelView.block<3, 3>(0, 0);
+  view.normalToView = linear.inverse().transpose().cast<float>();
+  view.viewToClip = ToEigen(camera->GetProjectionTransformMatrix(aspect, -1, 1)).cast<float>();
+  view.scale = std::cbrt(std::fabs(linear.determinant()));
+  view.orthographic = camera->GetParallelProjection() != 0;
+  view.pixelSpan = height > 0
+    ? (view.orthographic ? 2.0 * camera->GetParallelScale()
+                         : 2.0 * std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0)) / height
+    : 0.0;
+  vtkProperty* property = act->GetProperty();
+  view.look[0] = static_cast<float>(property->GetAmbient());
+  view.look[1] = static_cast<float>(property->GetDiffuse());
+  view.look[2] = static_cast<float>(property->GetOpacity());
+  view.radiusVC = static_cast<float>(prepared.view_radius * view.scale);
+  view.blendDepthVC = static_cast<float>(blendDepth * prepared.view_radius * view.scale);
+  view.perPoint = prepared.per_point_radii;
+  view.surfels = prepared.cloud.size();
+  view.drawn = prepared.drawn;
+  view.passes = RenderPassesOf(act);
+  for (vtkOpenGLRenderPass* pass : view.passes)
+  {
+    auto* subsurface = vtkSubsurfacePass::SafeDownCast(pass);
+    view.translucent = view.translucent || (subsurface && subsurface->GivesRadianceTo(act));
+  }
+  return view;
 }
 }
 
@@ -235,153 +338,114 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     return;
   }
   Internals& impl = *this->Impl;
-  const std::size_t n = prepared.cloud.size();
-
-  const bool perPoint = prepared.per_point_radii;
   if (impl.UploadTime < impl.PreparedTime)
   {
-    std::vector<float> positions(3 * n), normals(3 * n), radii(perPoint ? n : 1, 0.0f);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        positions[3 * i + c] =
-          static_cast<float>(prepared.cloud.positions[i][c] - prepared.centre[c]);
-        normals[3 * i + c] = static_cast<float>(prepared.cloud.normals[i][c]);
-      }
-      if (perPoint)
-      {
-        radii[i] = static_cast<float>(prepared.cloud.radii[i]);
-      }
-    }
-    impl.Positions->Upload(positions, vtkOpenGLBufferObject::ArrayBuffer);
-    impl.Normals->Upload(normals, vtkOpenGLBufferObject::ArrayBuffer);
-    impl.Colours->Upload(prepared.rgba, vtkOpenGLBufferObject::ArrayBuffer);
-    impl.Radii->Upload(radii, vtkOpenGLBufferObject::ArrayBuffer);
-    impl.UploadTime.Modified();
-    for (auto& bound : impl.BoundProgram)
-    {
-      bound = nullptr;
-    }
+    impl.BuildBufferObjects(prepared);
   }
-
-  // Matrices in double: the model is shifted to its bounds centre first, so georeferenced
-  // coordinates keep their precision in the float buffers.
-  vtkCamera* camera = ren->GetActiveCamera();
-  int width, height, x0, y0;
-  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
-  const double aspect = height > 0 ? double(width) / height : 1.0;
-  Eigen::Matrix4d shift = Eigen::Matrix4d::Identity();
-  shift.block<3, 1>(0, 3) =
-    Eigen::Vector3d(prepared.centre[0], prepared.centre[1], prepared.centre[2]);
-  const Eigen::Matrix4d modelView =
-    ToEigen(camera->GetModelViewTransformMatrix()) * ToEigen(act->GetMatrix());
-  const Eigen::Matrix4f modelToView = (modelView * shift).cast<float>();
-  const Eigen::Matrix3d linear = modelView.block<3, 3>(0, 0);
-  const Eigen::Matrix3f normalToView = linear.inverse().transpose().cast<float>();
-  const Eigen::Matrix4f viewToClip =
-    ToEigen(camera->GetProjectionTransformMatrix(aspect, -1, 1)).cast<float>();
-  const double scale = std::cbrt(std::fabs(linear.determinant()));
-  const std::vector<vtkOpenGLRenderPass*> passes = RenderPassesOf(act);
-  // A pixel's size in view units (orthographic) or per unit of distance (perspective).
-  const bool orthographic = camera->GetParallelProjection() != 0;
-  const double pixelSpan = height > 0
-    ? (orthographic ? 2.0 * camera->GetParallelScale()
-                    : 2.0 * std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0)) / height
-    : 0.0;
-  bool radianceFromPass = false;  // a pass (the subsurface pass) gives this actor's colour
-  vtkProperty* property = act->GetProperty();
-  const float look[3] = { static_cast<float>(property->GetAmbient()),
-    static_cast<float>(property->GetDiffuse()), static_cast<float>(property->GetOpacity()) };
-  const float blendDepthVC = static_cast<float>(this->BlendDepth * prepared.view_radius * scale);
-
-  // One surfel draw: SPLAT_PASS 0 hard discs, 1 visibility, 2 accumulation (surfel_fs.glsl).
-  auto draw = [&](int splatPass) -> bool
-  {
-    std::string vs = sss_surfel_vs, gs = sss_surfel_gs, fs = sss_surfel_fs;
-    vtkShaderProgram::Substitute(
-      fs, "//SSS::Splat::Dec", "#define SPLAT_PASS " + std::to_string(splatPass), true);
-    vtkShaderProgram::Substitute(
-      gs, "//SSS::Splat::Dec",
-      splatPass == 1 ? "#define SPLAT_PUSH_BACK" : (splatPass == 2 ? "#define SPLAT_RIM" : ""), true);
-    for (vtkOpenGLRenderPass* pass : passes)
-    {
-      pass->PreReplaceShaderValues(vs, gs, fs, this, act);
-    }
-    for (vtkOpenGLRenderPass* pass : passes)
-    {
-      pass->PostReplaceShaderValues(vs, gs, fs, this, act);
-    }
-    radianceFromPass = vs.find("//SSS::Radiance::Impl") == std::string::npos;
-    RemoveHooks(vs);
-    vtkShaderProgram* program =
-      renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-    if (!program)
-    {
-      vtkErrorMacro(<< "the surfel shaders did not compile");
-      return false;
-    }
-    vtkOpenGLVertexArrayObject* vao = impl.VAO[splatPass];
-    vao->Bind();
-    if (impl.BoundProgram[splatPass] != program)
-    {
-      vao->ReleaseGraphicsResources();
-      vao->Bind();
-      vao->AddAttributeArray(program, impl.Positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
-      vao->AddAttributeArray(program, impl.Normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
-      if (program->IsAttributeUsed("colourMC"))
-      {
-        vao->AddAttributeArray(program, impl.Colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
-      }
-      if (perPoint && program->IsAttributeUsed("radiusMC"))
-      {
-        vao->AddAttributeArray(program, impl.Radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
-      }
-      impl.BoundProgram[splatPass] = program;
-    }
-    program->SetUniformMatrix4x4("modelToView", const_cast<float*>(modelToView.data()));
-    program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normalToView.data()));
-    program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(viewToClip.data()));
-    program->SetUniformf("radiusVC", static_cast<float>(prepared.view_radius * scale));
-    program->SetUniformi("perPointRadius", perPoint ? 1 : 0);
-    program->SetUniformf("modelToViewScale", static_cast<float>(scale));
-    program->SetUniformf("blendDepthVC", blendDepthVC);
-    program->SetUniformi("orthographic", orthographic ? 1 : 0);
-    program->SetUniformf("pixelSpanVC", static_cast<float>(pixelSpan));
-    program->SetUniformi("viewFactorPerPixel", splatPass == 2 ? 1 : 0);
-    program->SetUniform3f("ambientDiffuse", look);
-    for (vtkOpenGLRenderPass* pass : passes)
-    {
-      if (!pass->SetShaderParameters(program, this, act, vao))
-      {
-        vtkErrorMacro(<< "a render pass could not set its shader parameters");
-        vao->Release();
-        return false;
-      }
-    }
-    // Ghosts (another piece's surfels) hide what lies behind them (1) and cover pixels (2),
-    // so that a piece's edge does not fade like a silhouette; their colour is that piece's.
-    const auto owned = static_cast<GLsizei>(prepared.drawn);
-    program->SetUniformi("coverageOnly", 0);
-    glDrawArrays(GL_POINTS, 0, splatPass == 1 ? static_cast<GLsizei>(n) : owned);
-    if (splatPass == 2 && prepared.drawn < n)
-    {
-      program->SetUniformi("coverageOnly", 1);
-      glDrawArrays(GL_POINTS, owned, static_cast<GLsizei>(n) - owned);
-    }
-    vao->Release();
-    return true;
-  };
-
+  const sss::SplatView view = MakeSplatView(ren, act, prepared, this->BlendDepth);
   vtkOpenGLState* state = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable blending(state, GL_BLEND);
-  if (this->Splatting == DISCS)
+  if (this->Splatting == DISCS || !this->DrawBlended(renWin, act, view))
   {
     state->vtkglDisable(GL_BLEND);
-    draw(0);
-    return;
+    this->DrawSplats(renWin, act, SPLAT_DISCS, view);
   }
+}
 
+vtkShaderProgram* vtkSurfelMapper::ReadySplatProgram(
+  vtkOpenGLRenderWindow* renWin, vtkActor* act, int splatPass, const sss::SplatView& view)
+{
+  std::string vs = sss_surfel_vs, gs = sss_surfel_gs, fs = sss_surfel_fs;
+  vtkShaderProgram::Substitute(
+    fs, "//SSS::Splat::Dec", "#define SPLAT_PASS " + std::to_string(splatPass), true);
+  vtkShaderProgram::Substitute(gs, "//SSS::Splat::Dec",
+    splatPass == SPLAT_VISIBILITY ? "#define SPLAT_PUSH_BACK"
+                                  : (splatPass == SPLAT_ACCUMULATION ? "#define SPLAT_RIM" : ""),
+    true);
+  for (vtkOpenGLRenderPass* pass : view.passes)
+  {
+    pass->PreReplaceShaderValues(vs, gs, fs, this, act);
+  }
+  for (vtkOpenGLRenderPass* pass : view.passes)
+  {
+    pass->PostReplaceShaderValues(vs, gs, fs, this, act);
+  }
+  RemoveHooks(vs);
+  vtkShaderProgram* program =
+    renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+  if (!program)
+  {
+    vtkErrorMacro(<< "the surfel shaders did not compile");
+  }
+  return program;
+}
+
+bool vtkSurfelMapper::DrawSplats(
+  vtkOpenGLRenderWindow* renWin, vtkActor* act, int splatPass, const sss::SplatView& view)
+{
+  vtkShaderProgram* program = this->ReadySplatProgram(renWin, act, splatPass, view);
+  if (!program)
+  {
+    return false;
+  }
+  Internals& impl = *this->Impl;
+  vtkOpenGLVertexArrayObject* vao = impl.VAO[splatPass];
+  vao->Bind();
+  if (impl.BoundProgram[splatPass] != program)
+  {
+    vao->ReleaseGraphicsResources();
+    vao->Bind();
+    vao->AddAttributeArray(program, impl.Positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(program, impl.Normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+    if (program->IsAttributeUsed("colourMC"))
+    {
+      vao->AddAttributeArray(program, impl.Colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+    }
+    if (view.perPoint && program->IsAttributeUsed("radiusMC"))
+    {
+      vao->AddAttributeArray(program, impl.Radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
+    }
+    impl.BoundProgram[splatPass] = program;
+  }
+  program->SetUniformMatrix4x4("modelToView", const_cast<float*>(view.modelToView.data()));
+  program->SetUniformMatrix3x3("normalToView", const_cast<float*>(view.normalToView.data()));
+  program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view.viewToClip.data()));
+  program->SetUniformf("radiusVC", view.radiusVC);
+  program->SetUniformi("perPointRadius", view.perPoint ? 1 : 0);
+  program->SetUniformf("modelToViewScale", static_cast<float>(view.scale));
+  program->SetUniformf("blendDepthVC", view.blendDepthVC);
+  program->SetUniformi("orthographic", view.orthographic ? 1 : 0);
+  program->SetUniformf("pixelSpanVC", static_cast<float>(view.pixelSpan));
+  program->SetUniformi("viewFactorPerPixel", splatPass == SPLAT_ACCUMULATION ? 1 : 0);
+  program->SetUniform3f("ambientDiffuse", view.look);
+  for (vtkOpenGLRenderPass* pass : view.passes)
+  {
+    if (!pass->SetShaderParameters(program, this, act, vao))
+    {
+      vtkErrorMacro(<< "a render pass could not set its shader parameters");
+      vao->Release();
+      return false;
+    }
+  }
+  // Ghosts (another piece's surfels) hide what lies behind them (visibility) and cover pixels
+  // (accumulation), so that a piece's edge does not fade like a silhouette; their colour is
+  // that piece's.
+  const auto owned = static_cast<GLsizei>(view.drawn);
+  const auto all = static_cast<GLsizei>(view.surfels);
+  program->SetUniformi("coverageOnly", 0);
+  glDrawArrays(GL_POINTS, 0, splatPass == SPLAT_VISIBILITY ? all : owned);
+  if (splatPass == SPLAT_ACCUMULATION && owned < all)
+  {
+    program->SetUniformi("coverageOnly", 1);
+    glDrawArrays(GL_POINTS, owned, all - owned);
+  }
+  vao->Release();
+  return true;
+}
+
+bool vtkSurfelMapper::DrawBlended(
+  vtkOpenGLRenderWindow* renWin, vtkActor* act, const sss::SplatView& view)
+{
   // Blended splatting in three passes, in buffers of the viewport's size that start from the
   // scene's depth, so that opaque actors drawn before hide the splats behind them.
   GLint viewport[4];
@@ -389,8 +453,10 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   const int w = viewport[2], h = viewport[3];
   if (w < 1 || h < 1)
   {
-    return;
+    return true;
   }
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
@@ -451,9 +517,7 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
                            "multisampled framebuffer?); drawing hard discs");
         impl.WarnedBlit = true;
       }
-      state->vtkglDisable(GL_BLEND);
-      draw(0);
-      return;
+      return false;
     }
     state->vtkglViewport(0, 0, w, h);
     state->vtkglEnable(GL_DEPTH_TEST);
@@ -461,7 +525,8 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     state->vtkglDisable(GL_BLEND);
     state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     state->vtkglDepthMask(GL_TRUE);
-    bool drawnAll = draw(1);  // visibility: the front surface, pushed back by BlendDepth radii
+    // Visibility: the front surface, pushed back by BlendDepth radii.
+    bool drawnAll = this->DrawSplats(renWin, act, SPLAT_VISIBILITY, view);
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
@@ -476,7 +541,8 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     {
       glBlendEquationSeparatei(1, GL_FUNC_ADD, GL_MAX);
     }
-    drawnAll = drawnAll && draw(2);  // accumulation of every disc within the offset
+    // Accumulation of every disc within the offset.
+    drawnAll = drawnAll && this->DrawSplats(renWin, act, SPLAT_ACCUMULATION, view);
     if (perBufferBlend)
     {
       glBlendEquationSeparatei(1, GL_FUNC_ADD, GL_FUNC_ADD);
@@ -486,24 +552,33 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     state->PopFramebufferBindings();
     if (!drawnAll)
     {
-      return;
+      return true;
     }
   }
-  // Normalisation into the renderer's framebuffer, colour and depth (surfel_normalise_fs.glsl):
-  // a translucent actor's pixels as they are, a plain one's blended by their coverage.
+  this->Normalise(renWin, act, view);
+  return true;
+}
+
+void vtkSurfelMapper::Normalise(
+  vtkOpenGLRenderWindow* renWin, vtkActor* act, const sss::SplatView& view)
+{
+  // Into the renderer's framebuffer, colour and depth (surfel_normalise_fs.glsl): a
+  // translucent actor's pixels as they are, a plain one's blended by their coverage.
   static const std::string normaliseSource = []
   {
     std::string source = sss_surfel_normalise_fs;
     vtkShaderProgram::Substitute(source, "//SSS::Dipole::Dec", sss_dipole, true);
     return source;
   }();
+  Internals& impl = *this->Impl;
   vtkShaderProgram* normalise = sss::ready_quad(impl.Normalise, renWin, normaliseSource.c_str());
   if (!normalise)
   {
     vtkErrorMacro(<< "the splat normalisation shader did not compile");
     return;
   }
-  if (radianceFromPass)
+  vtkOpenGLState* state = renWin->GetState();
+  if (view.translucent)
   {
     state->vtkglDisable(GL_BLEND);
   }
@@ -523,14 +598,14 @@ void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     inputs[k]->Activate();
     normalise->SetUniformi(names[k], inputs[k]->GetTextureUnit());
   }
-  normalise->SetUniformi("translucent", radianceFromPass ? 1 : 0);
-  normalise->SetUniform3f("ambientDiffuse", look);
-  normalise->SetUniformi("orthographic", orthographic ? 1 : 0);
-  Eigen::Matrix4f clipToView = viewToClip.inverse();
+  normalise->SetUniformi("translucent", view.translucent ? 1 : 0);
+  normalise->SetUniform3f("ambientDiffuse", view.look);
+  normalise->SetUniformi("orthographic", view.orthographic ? 1 : 0);
+  Eigen::Matrix4f clipToView = view.viewToClip.inverse();
   normalise->SetUniformMatrix4x4("clipToView", clipToView.data());
-  normalise->SetUniformMatrix4x4("viewToClip", const_cast<float*>(viewToClip.data()));
-  normalise->SetUniformf("blendDepthVC", blendDepthVC);
-  for (vtkOpenGLRenderPass* pass : passes)
+  normalise->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view.viewToClip.data()));
+  normalise->SetUniformf("blendDepthVC", view.blendDepthVC);
+  for (vtkOpenGLRenderPass* pass : view.passes)
   {
     pass->SetShaderParameters(normalise, this, act, nullptr);  // eta, for Ft
   }

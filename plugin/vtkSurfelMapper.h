@@ -38,10 +38,12 @@
 #include <string>
 
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 
 namespace sss
 {
 struct PreparedSurfels;
+struct SplatView;
 }
 
 class SSSTRANSLUCENCY_EXPORT vtkSurfelMapper : public vtkPolyDataMapper
@@ -180,6 +182,19 @@ protected:
   double BlendDepth = 0.5;
 
 private:
+#ifndef __VTK_WRAP__
+  // The draws of a frame, as VTK's point mappers split them: the buffers are built in
+  // Internals; each draw readies its shaders (the passes' replacements) and draws.
+  vtkShaderProgram* ReadySplatProgram(
+    vtkOpenGLRenderWindow* renWin, vtkActor* act, int splatPass, const sss::SplatView& view);
+  bool DrawSplats(
+    vtkOpenGLRenderWindow* renWin, vtkActor* act, int splatPass, const sss::SplatView& view);
+  // Blended splatting: visibility, accumulation, then Normalise; false when the scene's depth
+  // cannot be copied (the caller draws hard discs).
+  bool DrawBlended(vtkOpenGLRenderWindow* renWin, vtkActor* act, const sss::SplatView& view);
+  void Normalise(vtkOpenGLRenderWindow* renWin, vtkActor* act, const sss::SplatView& view);
+#endif
+
   vtkSurfelMapper(const vtkSurfelMapper&) = delete;
   void operator=(const vtkSurfelMapper&) = delete;
 

@@ -3,6 +3,7 @@
 #include "sssFarField.h"
 #include "sssGpuHelpers.h"
 #include "sssLitCells.h"
+#include "sssMaterialUniforms.h"
 #include "sssNearFieldTable.h"
 #include "sssSurfelList.h"
 #include "sssSurfelResolve.h"
@@ -33,7 +34,6 @@ namespace sss
 
 struct SurfelPipeline::Gpu
 {
-  std::unique_ptr<Dipole> dipole;
   Material material;
   NearFarSplit split;
   double support = 0;
@@ -57,23 +57,10 @@ struct SurfelPipeline::Gpu
   }
 
   // The dipole's uniforms (dipole.glsl) and where the far field starts (far_field.glsl).
-  void set_dipole(vtkShaderProgram* program) const
+  void set_dipole(vtkShaderProgram* program, const Dipole& dipole) const
   {
-    float zr[3], zv[3], str[3], factor[3], eta[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      const DipoleChannel& ch = dipole->channel[c];
-      zr[c] = static_cast<float>(ch.z_r);
-      zv[c] = static_cast<float>(ch.z_v);
-      str[c] = static_cast<float>(ch.s_tr);
-      factor[c] = static_cast<float>(ch.alpha_prime / (4.0 * M_PI));
-      eta[c] = static_cast<float>(material.eta[c]);
-    }
-    program->SetUniform3f("zR", zr);
-    program->SetUniform3f("zV", zv);
-    program->SetUniform3f("sTr", str);
-    program->SetUniform3f("rdFactor", factor);
-    program->SetUniform3f("eta", eta);
+    set_dipole_uniforms(program, dipole);
+    set_eta_uniform(program, material);
     program->SetUniformf("farFrom", static_cast<float>(split.reach));
   }
 };
@@ -100,23 +87,23 @@ void SurfelPipeline::release(vtkWindow* window)
 }
 
 bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
-  const Material& material, const Dipole&, const QualitySettings& settings, StepReport& report,
-  std::string& error)
+  const Material& material, const Dipole& dipole, const QualitySettings& settings,
+  StepReport& report, std::string& error)
 {
   Gpu& g = *gpu_;
   g.material = material;
   g.settings = settings;
   g.radius = local.radius;
-  g.dipole = std::make_unique<Dipole>(material);
-  g.support = g.dipole->max_support_radius(kKernelSupportFraction);
-  g.split = NearFarSplit::choose(*g.dipole, local.radius > 0.0 ? local.radius : 1.0, kKernelSupportFraction);
+  g.support = dipole.max_support_radius(kKernelSupportFraction);
+  g.split =
+    NearFarSplit::choose(dipole, local.radius > 0.0 ? local.radius : 1.0, kKernelSupportFraction);
   SurfelCells cells;
   NearFieldWeights weights;
   try
   {
     const SurfelIndex index(local.positions);
     cells = surfel_cells(local, index);
-    weights = near_field_weights(local, cells, index, *g.dipole, g.split.reach);
+    weights = near_field_weights(local, cells, index, dipole, g.split.reach);
   }
   catch (const std::exception& e)
   {
@@ -137,7 +124,7 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
 }
 
 bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& light_maps,
-  const Dipole&, bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points,
+  const Dipole& dipole, bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points,
   StepReport& report, std::string& error)
 {
   const LightMapAtlas maps = light_maps.atlas();
@@ -176,7 +163,7 @@ bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& li
   g.near.activate(gather);
   g.cells.activate(gather);
   g.list.set(gather);
-  g.set_dipole(gather);
+  g.set_dipole(gather, dipole);
   gather->SetUniformi("lightCount", lights);
   state->vtkglViewport(0, 0, g.list.width(), g.list.height());
   gather->SetUniformi("addNearField", 1);

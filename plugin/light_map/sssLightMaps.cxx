@@ -1,5 +1,6 @@
 #include "sssLightMaps.h"
 
+#include "sssMaterialUniforms.h"
 #include "sssPaperTaps.h"
 #include "sssSurfelBuffers.h"
 #include "sss_illumination_fs.h"
@@ -248,12 +249,7 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
     }
     vao_.program = program;
   }
-  float eta[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    eta[c] = static_cast<float>(material.eta[c]);
-  }
-  program->SetUniform3f("eta", eta);
+  set_eta_uniform(program, material);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
   const double reach = 0.5 * local.bounds.extent().norm() + local.max_disc_radius() + 1.0;

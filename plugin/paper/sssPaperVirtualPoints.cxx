@@ -1,6 +1,7 @@
 #include "sssPaperVirtualPoints.h"
 
 #include "sssLightMaps.h"
+#include "sssMaterialUniforms.h"
 #include "sssPaperTaps.h"
 #include "sssSurfelResolve.h"
 #include "sss_dipole.h"
@@ -208,19 +209,7 @@ bool PaperVirtualPoints::light(vtkOpenGLRenderWindow* window, const GpuLightMaps
     maps.power()->Activate();
     maps.normal()->Activate();
     receivers.points->Activate();
-    float zr[3], zv[3], str[3], factor[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      const DipoleChannel& ch = dipole.channel[c];
-      zr[c] = static_cast<float>(ch.z_r);
-      zv[c] = static_cast<float>(ch.z_v);
-      str[c] = static_cast<float>(ch.s_tr);
-      factor[c] = static_cast<float>(ch.alpha_prime / (4.0 * M_PI));
-    }
-    taps->SetUniform3f("zR", zr);
-    taps->SetUniform3f("zV", zv);
-    taps->SetUniform3f("sTr", str);
-    taps->SetUniform3f("rdFactor", factor);
+    set_dipole_uniforms(taps, dipole);
     std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f), texel(kMaxLights, 0.0f),
       axis_u(3 * kMaxLights, 0.0f), axis_v(3 * kMaxLights, 0.0f), corner(2 * kMaxLights, 0.0f);
     for (std::size_t l = 0; l < atlas.maps.size(); ++l)
