@@ -357,7 +357,7 @@ bool vtkSubsurfacePass::Composite(
 }
 
 bool vtkSubsurfacePass::PreReplaceShaderValues(std::string& vertexShader, std::string&,
-  std::string&, vtkAbstractMapper* mapper, vtkProp* prop)
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   if (!vtkSurfelMapper::SafeDownCast(mapper) ||
     !this->GivesRadianceTo(vtkActor::SafeDownCast(prop)))
@@ -369,6 +369,9 @@ bool vtkSubsurfacePass::PreReplaceShaderValues(std::string& vertexShader, std::s
   vtkShaderProgram::Substitute(vertexShader, "//SSS::Radiance::Dec", dec, true);
   vtkShaderProgram::Substitute(
     vertexShader, "//SSS::Radiance::Impl", sss_subsurface_view_impl, true);
+  // The blended splats' normalisation: Lo = Ft(eta, wo) B (eq. 14).
+  vtkShaderProgram::Substitute(fragmentShader, "//SSS::Outgoing::Dec",
+    std::string("#define SSS_TRANSLUCENT\n") + sss_dipole, true);
   return true;
 }
 

@@ -3,7 +3,6 @@
 #include "sssGpuHelpers.h"
 #include "sssSurfelPreparation.h"
 #include "vtkSubsurfacePass.h"
-#include "sss_dipole.h"
 #include "sss_surfel_fs.h"
 #include "sss_surfel_normalise_fs.h"
 #include "sss_surfel_gs.h"
@@ -58,7 +57,7 @@ struct vtkSurfelMapper::Internals
   vtkSmartPointer<vtkTextureObject> SplatDepth, WeightedColour, WeightedNormal;
   int SplatDepthFormat = -1;
   bool WarnedBlit = false;
-  std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
+  std::unique_ptr<vtkOpenGLQuadHelper> NormalisePlain, NormaliseTranslucent;
 
   // The prepared surfels as vertex buffers: positions relative to the bounds centre.
   void BuildBufferObjects(const sss::PreparedSurfels& prepared);
@@ -67,7 +66,8 @@ struct vtkSurfelMapper::Internals
   {
     sss::release_held(window, this->SplatDepth, this->WeightedColour, this->WeightedNormal);
     this->SplatBuffer->ReleaseGraphicsResources(window);
-    this->Normalise.reset();
+    this->NormalisePlain.reset();
+    this->NormaliseTranslucent.reset();
   }
 };
 
@@ -563,15 +563,22 @@ void vtkSurfelMapper::Normalise(
   vtkOpenGLRenderWindow* renWin, vtkActor* act, const sss::SplatView& view)
 {
   // Into the renderer's framebuffer, colour and depth (surfel_normalise_fs.glsl): a
-  // translucent actor's pixels as they are, a plain one's blended by their coverage.
-  static const std::string normaliseSource = []
-  {
-    std::string source = sss_surfel_normalise_fs;
-    vtkShaderProgram::Substitute(source, "//SSS::Dipole::Dec", sss_dipole, true);
-    return source;
-  }();
+  // translucent actor's pixels as they are (the pass fills in their outgoing radiance), a
+  // plain one's blended by their coverage.
   Internals& impl = *this->Impl;
-  vtkShaderProgram* normalise = sss::ready_quad(impl.Normalise, renWin, normaliseSource.c_str());
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad =
+    view.translucent ? impl.NormaliseTranslucent : impl.NormalisePlain;
+  std::string fs = sss_surfel_normalise_fs;
+  if (!quad && view.translucent)
+  {
+    std::string noVertexShader, noGeometryShader;
+    for (vtkOpenGLRenderPass* pass : view.passes)
+    {
+      pass->PreReplaceShaderValues(noVertexShader, noGeometryShader, fs, this, act);
+    }
+  }
+  vtkShaderProgram::Substitute(fs, "//SSS::Outgoing::Dec", "", true);
+  vtkShaderProgram* normalise = sss::ready_quad(quad, renWin, fs.c_str());
   if (!normalise)
   {
     vtkErrorMacro(<< "the splat normalisation shader did not compile");
@@ -598,8 +605,10 @@ void vtkSurfelMapper::Normalise(
     inputs[k]->Activate();
     normalise->SetUniformi(names[k], inputs[k]->GetTextureUnit());
   }
-  normalise->SetUniformi("translucent", view.translucent ? 1 : 0);
-  normalise->SetUniform3f("ambientDiffuse", view.look);
+  if (!view.translucent)
+  {
+    normalise->SetUniform3f("ambientDiffuse", view.look);
+  }
   normalise->SetUniformi("orthographic", view.orthographic ? 1 : 0);
   Eigen::Matrix4f clipToView = view.viewToClip.inverse();
   normalise->SetUniformMatrix4x4("clipToView", clipToView.data());
@@ -609,7 +618,7 @@ void vtkSurfelMapper::Normalise(
   {
     pass->SetShaderParameters(normalise, this, act, nullptr);  // eta, for Ft
   }
-  impl.Normalise->Render();
+  quad->Render();
   for (vtkTextureObject* t : inputs)
   {
     t->Deactivate();

@@ -7,20 +7,20 @@
 // (a silhouette) are blended over the scene by their coverage. Translucent ones hold linear
 // radiance the pass's composite tone maps, so they carry their coverage instead, as alpha
 // 3 - coverage (composite_fs.glsl fades them into their neighbours). Pixels no splat reached
-// are left as they were. Needs dipole.glsl.
+// are left as they were. The pass that gives the radiance fills the Outgoing hook below: it
+// defines SSS_TRANSLUCENT and fresnelTransmittanceRGB (dipole.glsl).
 
 in vec2 texCoord;
 uniform sampler2D weightedColour;  // sum of w rgb, sum of w
 uniform sampler2D weightedNormal;  // sum of w n (n turned towards the viewer), largest coverage
 uniform sampler2D splatDepth;      // the visibility pass's: the scene's where no disc covers
-uniform bool translucent;  // B from the subsurface pass, or the plain look
 uniform vec3 ambientDiffuse;       // the plain look's ambient and diffuse coefficients
 uniform bool orthographic;
 uniform mat4 clipToView;
 uniform mat4 viewToClip;
 uniform float blendDepthVC;  // how far surfel_gs.glsl pushed the visibility pass back
 
-//SSS::Dipole::Dec
+//SSS::Outgoing::Dec
 
 //VTK::Output::Dec
 
@@ -50,13 +50,10 @@ void main()
   vec3 n = normal.xyz;
   float length_n = length(n);
   float cosOut = length_n > 0.0 ? abs(dot(n / length_n, towardsViewer)) : 1.0;
-  if (translucent)
-  {
-    gl_FragData[0] = vec4(fresnelTransmittanceRGB(cosOut) * base, 3.0 - coverage);
-  }
-  else
-  {
-    gl_FragData[0] = vec4(base * (ambientDiffuse.x + ambientDiffuse.y * cosOut), coverage);
-  }
+#ifdef SSS_TRANSLUCENT
+  gl_FragData[0] = vec4(fresnelTransmittanceRGB(cosOut) * base, 3.0 - coverage);
+#else
+  gl_FragData[0] = vec4(base * (ambientDiffuse.x + ambientDiffuse.y * cosOut), coverage);
+#endif
   gl_FragDepth = depth;
 }
