@@ -1,7 +1,7 @@
 #include "sssKernelStrategies.h"
 
-#include "sssPaperVirtualPoints.h"
-#include "sssSurfelPipeline.h"
+#include "sssPaperStrategy.h"
+#include "sssNearFarStrategy.h"
 
 namespace sss
 {
@@ -9,7 +9,7 @@ namespace sss
 namespace
 {
 template <typename T>
-std::unique_ptr<Step2> Make()
+std::unique_ptr<Strategy> Make()
 {
   return std::make_unique<T>();
 }
@@ -18,15 +18,15 @@ std::unique_ptr<Step2> Make()
 struct Row
 {
   KernelStrategy strategy;
-  std::unique_ptr<Step2> (*make)();
+  std::unique_ptr<Strategy> (*make)();
 };
 const Row kStrategies[] = {
-  { KernelStrategy::Paper, &Make<PaperVirtualPoints> },
-  { KernelStrategy::NearFar, &Make<SurfelPipeline> },
+  { KernelStrategy::Paper, &Make<PaperStrategy> },
+  { KernelStrategy::NearFar, &Make<NearFarStrategy> },
 };
 }
 
-std::unique_ptr<Step2> make_step2(KernelStrategy strategy)
+std::unique_ptr<Strategy> make_strategy(KernelStrategy strategy)
 {
   for (const Row& row : kStrategies)
   {

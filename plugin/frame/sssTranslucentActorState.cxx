@@ -39,18 +39,18 @@ struct TranslucentActorState::Gpu
   LocalSurfels local;
   std::unique_ptr<Dipole> dipole;
   SurfelBuffers buffers;
-  GpuLightMaps maps;              // step 1
-  std::unique_ptr<Step2> step2;   // the strategy's
-  KernelStrategy strategy = KernelStrategy::NearFar;
-  SurfelResolve resolve;          // B per surfel for the camera view
+  GpuLightMaps maps;                  // step 1
+  std::unique_ptr<Strategy> strategy;  // step 2, as the settings' kernel strategy runs it
+  KernelStrategy strategy_kind = KernelStrategy::NearFar;
+  SurfelResolve resolve;              // B per surfel for the camera view
 
   void release(vtkWindow* window)
   {
     buffers.release();
     maps.release(window);
-    if (step2)
+    if (strategy)
     {
-      step2->release(window);
+      strategy->release(window);
     }
     resolve.release(window);
   }
@@ -128,7 +128,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   }
 
   LightMapReport maps;
-  LightMapRequest request = g.step2->light_map_request(settings);
+  LightMapRequest request = g.strategy->light_map_request(settings);
   request.pieces = pieces;
   if (!g.maps.render(window, g.buffers, g.local, lights, request, material_, albedo_from_colour,
         maps, error))
@@ -142,7 +142,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   report.map_height = maps.map_height;
   report.texel_mm = maps.texel_mm;
   report.notes = maps.notes;
-  if (!g.step2->light(window, g.maps, *g.dipole, finish, g.resolve, g.buffers.points, report, error))
+  if (!g.strategy->light(window, g.maps, *g.dipole, finish, g.resolve, g.buffers.points, report, error))
   {
     return false;
   }
@@ -164,14 +164,14 @@ bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSu
   g.buffers.upload(g.local, surfels.rgba);
   g.maps.buffers_changed();
   g.resolve.allocate(window, n);
-  if (!g.step2 || g.strategy != settings.strategy)
+  if (!g.strategy || g.strategy_kind != settings.strategy)
   {
-    if (g.step2)
+    if (g.strategy)
     {
-      g.step2->release(window);
+      g.strategy->release(window);
     }
-    g.step2 = make_step2(settings.strategy);
-    g.strategy = settings.strategy;
+    g.strategy = make_strategy(settings.strategy);
+    g.strategy_kind = settings.strategy;
   }
   // Colours as albedo, as the light maps' fragments take them.
   g.local.albedo.clear();
@@ -186,7 +186,7 @@ bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSu
       }
     }
   }
-  return g.step2->bake(window, g.local, material_, *g.dipole, settings, report, error);
+  return g.strategy->bake(window, g.local, material_, *g.dipole, settings, report, error);
 }
 
 bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,

@@ -1,7 +1,7 @@
 // One translucent actor in a vtkSubsurfacePass: which steps its changed inputs call for, and
 // their order. The steps live in their own rooms: the light maps (step 1, sssLightMaps), step 2
-// (the strategy's, sssKernelStrategies: sssSurfelPipeline or the paper's
-// sssPaperVirtualPoints) and the hand-over of each surfel's B to the view (sssSurfelResolve).
+// (the strategy's, sssKernelStrategies: sssNearFarStrategy or the paper's
+// sssPaperStrategy) and the hand-over of each surfel's B to the view (sssSurfelResolve).
 #ifndef sssTranslucentActorState_h
 #define sssTranslucentActorState_h
 

@@ -1,6 +1,6 @@
 #include "sssSurfelResolve.h"
 
-#include "sssPaperVirtualPoints.h"
+#include "sssPaperStrategy.h"
 #include "sss_surfel_resolve_fs.h"
 #include "sss_surfel_resolve_vs.h"
 
@@ -46,7 +46,7 @@ bool SurfelResolve::from_list(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObje
 }
 
 bool SurfelResolve::from_grid(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-  const PaperVirtualPoints& grid, std::string& error)
+  const PaperStrategy& grid, std::string& error)
 {
   if (no_texel_count_ != count_)
   {
@@ -58,7 +58,7 @@ bool SurfelResolve::from_grid(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObje
 }
 
 bool SurfelResolve::draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-  vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const PaperVirtualPoints* grid,
+  vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const PaperStrategy* grid,
   std::string& error)
 {
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(

@@ -22,7 +22,7 @@ class vtkWindow;
 namespace sss
 {
 
-class PaperVirtualPoints;
+class PaperStrategy;
 
 class SurfelResolve
 {
@@ -35,7 +35,7 @@ public:
     vtkOpenGLBufferObject* list_texel, vtkTextureObject* radiance, std::string& error);
   // B interpolated from the paper's virtual points at each surfel's position.
   bool from_grid(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-    const PaperVirtualPoints& grid, std::string& error);
+    const PaperStrategy& grid, std::string& error);
   // B given per surfel (e.g. the CPU reference's).
   void set(vtkOpenGLRenderWindow* window, const std::vector<Rgb>& B);
   bool read(vtkOpenGLRenderWindow* window, std::vector<Rgb>& B);
@@ -48,7 +48,7 @@ public:
 
 private:
   bool draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-    vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const PaperVirtualPoints* grid,
+    vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const PaperStrategy* grid,
     std::string& error);
 
   std::size_t count_ = 0;

@@ -1,4 +1,4 @@
-#include "sssSurfelPipeline.h"
+#include "sssNearFarStrategy.h"
 
 #include "sssFarField.h"
 #include "sssGpuHelpers.h"
@@ -32,7 +32,7 @@
 namespace sss
 {
 
-struct SurfelPipeline::Gpu
+struct NearFarStrategy::Gpu
 {
   Material material;
   NearFarSplit split;
@@ -65,14 +65,14 @@ struct SurfelPipeline::Gpu
   }
 };
 
-SurfelPipeline::SurfelPipeline()
+NearFarStrategy::NearFarStrategy()
   : gpu_(new Gpu)
 {
 }
 
-SurfelPipeline::~SurfelPipeline() = default;
+NearFarStrategy::~NearFarStrategy() = default;
 
-LightMapRequest SurfelPipeline::light_map_request(const QualitySettings& settings) const
+LightMapRequest NearFarStrategy::light_map_request(const QualitySettings& settings) const
 {
   LightMapRequest request;
   request.texel_per_radius = settings.texel_per_radius;
@@ -81,12 +81,12 @@ LightMapRequest SurfelPipeline::light_map_request(const QualitySettings& setting
   return request;
 }
 
-void SurfelPipeline::release(vtkWindow* window)
+void NearFarStrategy::release(vtkWindow* window)
 {
   gpu_->release(window);
 }
 
-bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
+bool NearFarStrategy::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
   const Material& material, const Dipole& dipole, const QualitySettings& settings,
   StepReport& report, std::string& error)
 {
@@ -123,7 +123,7 @@ bool SurfelPipeline::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loc
   return true;
 }
 
-bool SurfelPipeline::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& light_maps,
+bool NearFarStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& light_maps,
   const Dipole& dipole, bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points,
   StepReport& report, std::string& error)
 {

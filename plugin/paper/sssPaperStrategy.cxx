@@ -1,4 +1,4 @@
-#include "sssPaperVirtualPoints.h"
+#include "sssPaperStrategy.h"
 
 #include "sssLightMaps.h"
 #include "sssMaterialUniforms.h"
@@ -86,19 +86,19 @@ struct ReceiverList
   }
 };
 
-PaperVirtualPoints::PaperVirtualPoints()
+PaperStrategy::PaperStrategy()
   : receivers_(new ReceiverList)
 {
 }
 
-PaperVirtualPoints::~PaperVirtualPoints() = default;
+PaperStrategy::~PaperStrategy() = default;
 
-vtkTextureObject* PaperVirtualPoints::gathered() const
+vtkTextureObject* PaperStrategy::gathered() const
 {
   return receivers_->B;
 }
 
-void PaperVirtualPoints::release(vtkWindow* window)
+void PaperStrategy::release(vtkWindow* window)
 {
   grid_.reset();
   receivers_->release(window);
@@ -109,14 +109,14 @@ void PaperVirtualPoints::release(vtkWindow* window)
   grid_fbo_->ReleaseGraphicsResources(window);
 }
 
-LightMapRequest PaperVirtualPoints::light_map_request(const QualitySettings&) const
+LightMapRequest PaperStrategy::light_map_request(const QualitySettings&) const
 {
   LightMapRequest request;
   request.paper = true;
   return request;
 }
 
-bool PaperVirtualPoints::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
+bool PaperStrategy::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
   const Material&, const Dipole& dipole, const QualitySettings& settings, StepReport& report,
   std::string& error)
 {
@@ -187,7 +187,7 @@ bool PaperVirtualPoints::bake(vtkOpenGLRenderWindow* window, const LocalSurfels&
   return true;
 }
 
-bool PaperVirtualPoints::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps,
+bool PaperStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps,
   const Dipole& dipole, bool, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport&,
   std::string& error)
 {

@@ -2,11 +2,11 @@
 // surface is (core/paper/virtual_grid.h), B at each from 49 Gaussian taps of the light maps
 // (paper_taps_fs.glsl, gather_paper.glsl), stored in a 3-D texture that each surfel samples
 // trilinearly.
-#ifndef sssPaperVirtualPoints_h
-#define sssPaperVirtualPoints_h
+#ifndef sssPaperStrategy_h
+#define sssPaperStrategy_h
 
 #include "sssGpuHelpers.h"
-#include "sssStep2.h"
+#include "sssStrategy.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -31,11 +31,11 @@ class VirtualGrid;
 struct LocalSurfels;
 struct ReceiverList;
 
-class PaperVirtualPoints : public Step2
+class PaperStrategy : public Strategy
 {
 public:
-  PaperVirtualPoints();
-  ~PaperVirtualPoints() override;
+  PaperStrategy();
+  ~PaperStrategy() override;
 
   // The grid for these surfels: 2^GridLevel points per axis, 0 for the paper's 64.
   bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,

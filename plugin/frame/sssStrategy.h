@@ -1,8 +1,8 @@
 // Step 2 as a kernel strategy: what it bakes when the geometry, the material or a setting
 // changes, what it asks of the light maps, what a light move runs, and how it hands each
 // surfel's B to the view. The strategies are rows of one table (sssKernelStrategies.h).
-#ifndef sssStep2_h
-#define sssStep2_h
+#ifndef sssStrategy_h
+#define sssStrategy_h
 
 #include "quality_settings.h"
 #include "sssLightMaps.h"
@@ -39,10 +39,10 @@ struct StepReport
   std::vector<std::string> notes;             // lights drawn otherwise than asked, and why
 };
 
-class Step2
+class Strategy
 {
 public:
-  virtual ~Step2() = default;
+  virtual ~Strategy() = default;
   // `local` carries its surface fit and its albedo (none for white).
   virtual bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
     const Material& material, const Dipole& dipole, const QualitySettings& settings,

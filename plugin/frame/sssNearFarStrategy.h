@@ -5,8 +5,8 @@
 // (core/reference/reference_renderer.h): the bake (cells, the near-field table, the surfel list) runs on
 // the CPU when the geometry, the material or a setting changes; a light move runs three GPU
 // passes per light and the near and far field's passes over all surfels.
-#ifndef sssSurfelPipeline_h
-#define sssSurfelPipeline_h
+#ifndef sssNearFarStrategy_h
+#define sssNearFarStrategy_h
 
 #include "dipole.h"
 #include "local_surfels.h"
@@ -14,7 +14,7 @@
 #include "near_far_split.h"
 #include "quality_settings.h"
 #include "sssLightMaps.h"
-#include "sssStep2.h"
+#include "sssStrategy.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -36,11 +36,11 @@ class vtkWindow;
 namespace sss
 {
 
-class SurfelPipeline : public Step2
+class NearFarStrategy : public Strategy
 {
 public:
-  SurfelPipeline();
-  ~SurfelPipeline() override;
+  NearFarStrategy();
+  ~NearFarStrategy() override;
 
   // The CPU bake (cells, the near-field table, the surfel list) and its uploads.
   bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
