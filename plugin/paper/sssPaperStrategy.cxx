@@ -93,11 +93,6 @@ PaperStrategy::PaperStrategy()
 
 PaperStrategy::~PaperStrategy() = default;
 
-vtkTextureObject* PaperStrategy::gathered() const
-{
-  return receivers_->B;
-}
-
 void PaperStrategy::release(vtkWindow* window)
 {
   grid_.reset();
@@ -291,7 +286,11 @@ bool PaperStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& map
   state->PopFramebufferBindings();
   grid_vao_.vao->Release();
   receivers.B->Deactivate();
-  return resolve.from_grid(window, points, *this, error);
+  GridRadiance on_grid;
+  on_grid.grid = grid_.get();
+  on_grid.radiance = radiance_;
+  on_grid.gathered = receivers.B;  // B per virtual point, in their list's layout
+  return resolve.from_grid(window, points, on_grid, error);
 }
 
 }

@@ -49,16 +49,12 @@ public:
     std::string& error) override;
   void release(vtkWindow* window) override;
 
-  const VirtualGrid& grid() const { return *grid_; }
-  vtkTextureObject* radiance() const { return radiance_; }  // 3-D, linear filtering
-  vtkTextureObject* gathered() const;  // B per virtual point, in their list's layout
-
 private:
   std::unique_ptr<VirtualGrid> grid_;
   std::unique_ptr<ReceiverList> receivers_;
   vtkNew<vtkOpenGLBufferObject> grid_index_;
   std::vector<std::pair<int, int>> slice_range_;  // first, count per k
-  vtkSmartPointer<vtkTextureObject> radiance_;
+  vtkSmartPointer<vtkTextureObject> radiance_;  // B on the grid: 3-D, linear filtering
   std::unique_ptr<vtkOpenGLQuadHelper> taps_quad_;
   vtkNew<vtkOpenGLFramebufferObject> taps_fbo_, grid_fbo_;
   ProgramVAO grid_vao_;

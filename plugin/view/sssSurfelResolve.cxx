@@ -1,6 +1,5 @@
 #include "sssSurfelResolve.h"
 
-#include "sssPaperStrategy.h"
 #include "sss_surfel_resolve_fs.h"
 #include "sss_surfel_resolve_vs.h"
 
@@ -46,7 +45,7 @@ bool SurfelResolve::from_list(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObje
 }
 
 bool SurfelResolve::from_grid(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-  const PaperStrategy& grid, std::string& error)
+  const GridRadiance& grid, std::string& error)
 {
   if (no_texel_count_ != count_)
   {
@@ -54,11 +53,11 @@ bool SurfelResolve::from_grid(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObje
     no_texel_->Upload(std::vector<float>(2 * count_, 0.0f), vtkOpenGLBufferObject::ArrayBuffer);
     vao_.program = nullptr;
   }
-  return draw(window, points, no_texel_, grid.gathered(), &grid, error);
+  return draw(window, points, no_texel_, grid.gathered, &grid, error);
 }
 
 bool SurfelResolve::draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-  vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const PaperStrategy* grid,
+  vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const GridRadiance* grid,
   std::string& error)
 {
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
@@ -80,9 +79,9 @@ bool SurfelResolve::draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* p
   program->SetUniformi("gridRadiance", spare_unit);
   if (grid)
   {
-    const VirtualGrid& g = grid->grid();
-    grid->radiance()->Activate();
-    program->SetUniformi("gridRadiance", grid->radiance()->GetTextureUnit());
+    const VirtualGrid& g = *grid->grid;
+    grid->radiance->Activate();
+    program->SetUniformi("gridRadiance", grid->radiance->GetTextureUnit());
     const float origin[3] = { static_cast<float>(g.origin().x()),
       static_cast<float>(g.origin().y()), static_cast<float>(g.origin().z()) };
     program->SetUniform3f("gridOrigin", origin);
@@ -108,7 +107,7 @@ bool SurfelResolve::draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* p
   vao_.vao->Release();
   if (grid)
   {
-    grid->radiance()->Deactivate();
+    grid->radiance->Deactivate();
   }
   else
   {

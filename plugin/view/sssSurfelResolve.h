@@ -22,7 +22,16 @@ class vtkWindow;
 namespace sss
 {
 
-class PaperStrategy;
+class VirtualGrid;
+
+// B on the paper's virtual points: the grid, its radiance (a 3-D texture over the grid) and
+// the gathered texture the draw binds first.
+struct GridRadiance
+{
+  const VirtualGrid* grid = nullptr;
+  vtkTextureObject* radiance = nullptr;
+  vtkTextureObject* gathered = nullptr;
+};
 
 class SurfelResolve
 {
@@ -35,7 +44,7 @@ public:
     vtkOpenGLBufferObject* list_texel, vtkTextureObject* radiance, std::string& error);
   // B interpolated from the paper's virtual points at each surfel's position.
   bool from_grid(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-    const PaperStrategy& grid, std::string& error);
+    const GridRadiance& grid, std::string& error);
   // B given per surfel (e.g. the CPU reference's).
   void set(vtkOpenGLRenderWindow* window, const std::vector<Rgb>& B);
   bool read(vtkOpenGLRenderWindow* window, std::vector<Rgb>& B);
@@ -48,7 +57,7 @@ public:
 
 private:
   bool draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
-    vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const PaperStrategy* grid,
+    vtkOpenGLBufferObject* texel, vtkTextureObject* gathered, const GridRadiance* grid,
     std::string& error);
 
   std::size_t count_ = 0;
