@@ -113,7 +113,7 @@ LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<Light
         << " in [1, 65535]";
     throw std::invalid_argument(msg.str());
   }
-  const double texel = settings.texel_per_radius * surfels.radius;
+  const double texel = settings.texel_per_radius * surfels.cell_radius;
   LightMaps out;
   for (const Light& light : lights) {
     light.validate();
@@ -121,9 +121,9 @@ LightMaps render_light_maps(const LocalSurfels& surfels, const std::vector<Light
     const LightView view = fit_light_view(surfels, local, texel, settings.max_map_size);
     out.hits.push_back(view.from_point
                            ? rasterize_discs(view.perspective, surfels.positions, surfels.normals,
-                                             surfels.radius, surfels.disc_radii)
+                                             surfels.cell_radius, surfels.disc_radii)
                            : rasterize_discs(view.ortho, surfels.positions, surfels.normals,
-                                             surfels.radius, surfels.disc_radii));
+                                             surfels.cell_radius, surfels.disc_radii));
     out.views.push_back(view);
     out.lights.push_back(local);
   }
@@ -135,7 +135,7 @@ SurfacePoint seen_point(const LocalSurfels& surfels, const LightView& view, cons
   const std::int32_t s = hits.surfel[static_cast<std::size_t>(j) * view.width() + i];
   const Eigen::Vector3d hit = view.hit_point(hits, i, j);
   if (surfels.curvature.size() != surfels.size()) return {hit, surfels.normals[s]};
-  const double limit = 1.0 / surfels.radius;
+  const double limit = 1.0 / surfels.cell_radius;
   return on_local_surface(surfels.positions[s], surfels.normals[s],
                           std::clamp(surfels.curvature[s], -limit, limit),
                           hit - surfels.positions[s]);

@@ -19,7 +19,7 @@ bool on_same_surface(const LocalSurfels& surfels, std::size_t i, std::size_t j, 
 
 SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index) {
   const std::size_t n = surfels.size();
-  const double r = surfels.radius;
+  const double r = surfels.cell_radius;
   std::vector<Polygon> cells(n);
   const long count = static_cast<long>(n);
 #pragma omp parallel default(none) shared(surfels, index, cells, count, r)

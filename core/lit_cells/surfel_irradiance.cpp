@@ -28,7 +28,7 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
         "[sss::surfel_irradiance] one cell area per surfel, at least one sample and at least as "
         "many refined ones are needed");
   const std::size_t n = surfels.size();
-  const double limit = 1.0 / surfels.radius;
+  const double limit = 1.0 / surfels.cell_radius;
   SurfelIrradiance E(light.size(), std::vector<Rgb>(n, Rgb{0.0, 0.0, 0.0}));
   for (std::size_t li = 0; li < light.size(); ++li) {
     const LocalLight& source = light.lights[li];
@@ -42,7 +42,7 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
       const Eigen::Vector3d n = side * surfels.normals[j];
       const double kappa = side * std::clamp(surfels.curvature[j], -limit, limit);
       const double thickness =
-          surface_thickness(surfels.roughness[j], surfels.curvature[j], surfels.radius);
+          surface_thickness(surfels.roughness[j], surfels.curvature[j], surfels.cell_radius);
       const double cell_radius = std::sqrt(area[j] / kPi);
       Eigen::Vector3d t1, t2;
       tangent_frame(n, t1, t2);

@@ -43,7 +43,7 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
                                     const std::vector<std::size_t>& receivers) {
   const std::size_t n = receivers.empty() ? surfels.size() : receivers.size();
   std::vector<Row> rows(n);
-  const double r = surfels.radius;
+  const double r = surfels.cell_radius;
   const double kappa_limit = 1.0 / reach;
   // Cells of surfels within the reach extend beyond it by their farthest corner (about a disc
   // radius; more where a sparse spot's cell reaches to the disc that closes the surface).

@@ -22,8 +22,9 @@ struct Layout {
 // 2^level points along the longest side of the bounds (padded by the disc radius); the other
 // axes get the same spacing and only as many points as they need (at least 2).
 Layout layout_for(const LocalSurfels& surfels, int level) {
-  const Eigen::Vector3d lo = surfels.bounds.min.array() - surfels.radius;
-  const Eigen::Vector3d extent = (surfels.bounds.max - surfels.bounds.min).array() + 2 * surfels.radius;
+  const Eigen::Vector3d lo = surfels.bounds.min.array() - surfels.cell_radius;
+  const Eigen::Vector3d extent =
+      (surfels.bounds.max - surfels.bounds.min).array() + 2 * surfels.cell_radius;
   const int n = 1 << level;
   Layout layout;
   layout.spacing = extent.maxCoeff() / (n - 1);

@@ -54,7 +54,7 @@ ReferenceSolver::ReferenceSolver(const SurfelCloud& cloud, const Material& mater
   surfels_ = LocalSurfels::from(cloud, material.mm_per_unit);
   index_ = std::make_unique<SurfelIndex>(surfels_.positions);
   cells_ = surfel_cells(surfels_, *index_);
-  split_ = NearFarSplit::choose(dipole_, surfels_.radius > 0.0 ? surfels_.radius : 1.0,
+  split_ = NearFarSplit::choose(dipole_, surfels_.cell_radius > 0.0 ? surfels_.cell_radius : 1.0,
                                 settings.tree.kernel_tolerance);
   receivers_ = settings.receivers;
   if (receivers_.empty()) {

@@ -19,7 +19,7 @@ LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
   }
   local.normals = cloud.normals;
   local.albedo = cloud.albedo;
-  local.radius = cloud.radius * mm_per_unit;
+  local.cell_radius = cloud.radius * mm_per_unit;
   local.disc_radii.reserve(cloud.radii.size());
   for (double r : cloud.radii) local.disc_radii.push_back(std::max(r, cloud.radius) * mm_per_unit);
   if (with_surface_fit) {
@@ -31,7 +31,7 @@ LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
 }
 
 double LocalSurfels::max_disc_radius() const {
-  double r = radius;
+  double r = cell_radius;
   for (double d : disc_radii) r = std::max(r, d);
   return r;
 }

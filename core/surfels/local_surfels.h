@@ -15,7 +15,7 @@ struct LocalSurfels {
   std::vector<Rgb> albedo;                 // empty or one per surfel
   std::vector<double> curvature;           // 1/mm (surface_fit.h); empty: flat discs
   std::vector<double> roughness;           // mm (surface_fit.h); empty with the curvature
-  double radius = 0.0;                     // mm: the cells' (dA's) radius and the texel's scale
+  double cell_radius = 0.0;                // mm: the cells' (dA's) radius and the texel's scale
   std::vector<double> disc_radii;          // mm: each disc as the light sees it (empty: radius):
                                            // the radius that closes the surface (splat_coverage.h),
                                            // at least `radius` (smaller flat discs open gaps where
@@ -27,7 +27,9 @@ struct LocalSurfels {
   static LocalSurfels from(const SurfelCloud& cloud, double mm_per_unit,
                            bool with_surface_fit = true);
   std::size_t size() const { return positions.size(); }
-  double disc_radius(std::size_t i) const { return disc_radii.empty() ? radius : disc_radii[i]; }
+  double disc_radius(std::size_t i) const {
+    return disc_radii.empty() ? cell_radius : disc_radii[i];
+  }
   double max_disc_radius() const;
 };
 

@@ -50,8 +50,8 @@ LinearImage render_view(const SurfelCloud& cloud, const Material& material,
   const OrthoView view = OrthoView::fit_image(surfels.positions, surfels.max_disc_radius(),
                                               camera.view_direction.normalized(), camera.up,
                                               camera.width, camera.height);
-  const DiscHits hits = rasterize_discs(view, surfels.positions, surfels.normals, surfels.radius,
-                                        surfels.disc_radii);
+  const DiscHits hits = rasterize_discs(view, surfels.positions, surfels.normals,
+                                        surfels.cell_radius, surfels.disc_radii);
   const std::vector<Rgb> Lo = outgoing_radiance(cloud, material, B, view.w);
   LinearImage image(camera.width, camera.height);
   for (std::size_t k = 0; k < hits.surfel.size(); ++k) {

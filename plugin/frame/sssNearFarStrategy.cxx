@@ -37,7 +37,7 @@ struct NearFarStrategy::Gpu
   Material material;
   NearFarSplit split;
   double support = 0;
-  double radius = 0;
+  double cell_radius = 0;  // mm
   QualitySettings settings;
 
   SurfelList list;
@@ -93,10 +93,10 @@ bool NearFarStrategy::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& lo
   Gpu& g = *gpu_;
   g.material = material;
   g.settings = settings;
-  g.radius = local.radius;
+  g.cell_radius = local.cell_radius;
   g.support = dipole.max_support_radius(kKernelSupportFraction);
-  g.split =
-    NearFarSplit::choose(dipole, local.radius > 0.0 ? local.radius : 1.0, kKernelSupportFraction);
+  g.split = NearFarSplit::choose(
+    dipole, local.cell_radius > 0.0 ? local.cell_radius : 1.0, kKernelSupportFraction);
   SurfelCells cells;
   NearFieldWeights weights;
   try
@@ -130,7 +130,7 @@ bool NearFarStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& l
   const LightMapAtlas maps = light_maps.atlas();
   Gpu& g = *gpu_;
   Stopwatch clock;
-  if (!g.cells.light(window, g.list, maps, g.radius, g.settings.cell_samples, error))
+  if (!g.cells.light(window, g.list, maps, g.cell_radius, g.settings.cell_samples, error))
   {
     return false;
   }

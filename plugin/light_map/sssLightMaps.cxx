@@ -120,7 +120,7 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
   const bool paper = request.paper;
   // The paper's map is 512 texels a side; the surfel pipeline's texels are TexelPerRadius of
   // a disc radius, at most MaxMapSize a side.
-  const double texel = paper ? 1e-9 : request.texel_per_radius * local.radius;
+  const double texel = paper ? 1e-9 : request.texel_per_radius * local.cell_radius;
   const int max_size = paper ? kPaperMapSize : request.max_map_size;
   vtkSubsurfacePieces* pieces =
     !paper && request.pieces && request.pieces->GetNumberOfPieces() > 1 ? request.pieces : nullptr;

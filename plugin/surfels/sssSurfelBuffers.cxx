@@ -13,7 +13,7 @@ void SurfelBuffers::upload(const LocalSurfels& local, const std::vector<std::uin
 {
   count = local.size();
   std::vector<float> p(3 * count), n(3 * count), curvature(count), radius(count);
-  const double lift_limit = 1.0 / local.radius;
+  const double lift_limit = 1.0 / local.cell_radius;
   for (std::size_t i = 0; i < count; ++i)
   {
     for (int c = 0; c < 3; ++c)

@@ -90,7 +90,7 @@ bool SurfelList::upload(vtkOpenGLRenderWindow* window, const LocalSurfels& local
       albedo[4 * t + c] = static_cast<float>(local.albedo.empty() ? 1.0 : local.albedo[i][c]);
     }
     point[4 * t + 3] = static_cast<float>(
-      surface_thickness(local.roughness[i], local.curvature[i], local.radius));
+      surface_thickness(local.roughness[i], local.curvature[i], local.cell_radius));
     shape[4 * t + 3] = static_cast<float>(local.curvature[i]);
     cell[4 * t] = static_cast<float>(std::sqrt(cells.area[i] / M_PI));
     cell[4 * t + 1] = static_cast<float>(cells.area[i]);
