@@ -80,7 +80,8 @@ void vtkSurfelMapper::Internals::BuildBufferObjects(const sss::PreparedSurfels& 
   {
     for (int c = 0; c < 3; ++c)
     {
-      positions[3 * i + c] = static_cast<float>(prepared.cloud.positions[i][c] - prepared.centre[c]);
+      positions[3 * i + c] =
+        static_cast<float>(prepared.cloud.positions[i][c] - prepared.centre[c]);
       normals[3 * i + c] = static_cast<float>(prepared.cloud.normals[i][c]);
     }
     if (perPoint)
@@ -592,7 +593,8 @@ void vtkSurfelMapper::Normalise(
   else
   {
     state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    state->vtkglBlendFuncSeparate(
+      GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   }
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_ALWAYS);

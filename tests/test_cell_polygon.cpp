@@ -1,7 +1,7 @@
-// The near field's integrals of the kernel over a cell (core/near_field/cell_polygon.h) against a direct
-// sum over a fine polar grid, where a cell's straight edge passes a few millimetres from the
-// receiver (as a wall's cell does beside a roof's receiver in an airborne scan), and for a cell
-// far away: positive, and within 0.2 % of the direct sum.
+// The near field's integrals of the kernel over a cell (core/near_field/cell_polygon.h) against a
+// direct sum over a fine polar grid, where a cell's straight edge passes a few millimetres from the
+// receiver (as a wall's cell does beside a roof's receiver in an airborne scan), and for a cell far
+// away: positive, and within 0.2 % of the direct sum.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -90,9 +90,9 @@ AgainstReference against_reference(const SurfelCloud& cloud, const Material& mat
 
 class GpuVsReference : public ::testing::TestWithParam<ScanCase> {};
 
-// The project's error metric (core/reference/error_metric.h) at 3000 points of each scan, the reference cached per scan,
-// material and light. Bars: mean < 1 %, p99 < 5 % on every scan; mean < 0.5 % on the Stanford
-// objects; no point's B negative, GPU or reference.
+// The project's error metric (core/reference/error_metric.h) at 3000 points of each scan, the
+// reference cached per scan, material and light. Bars: mean < 1 %, p99 < 5 % on every scan; mean <
+// 0.5 % on the Stanford objects; no point's B negative, GPU or reference.
 TEST_P(GpuVsReference, MeetsItsBars) {
   const ScanCase& c = GetParam();
   if (c.long_run && !std::getenv("SSS_LONG_TESTS"))

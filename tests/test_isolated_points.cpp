@@ -1,7 +1,7 @@
-// Isolated points (core/surfels/isolated_points.h) on synthetic scans with known strays: a room's walls
-// scanned from one station (density falling with the square of range, range noise) keep every
-// surface point while single strays beside the walls, above the floor and between two
-// surfaces are left out; a clean plane and a plane with Kinect-like depth noise lose nothing.
+// Isolated points (core/surfels/isolated_points.h) on synthetic scans with known strays: a room's
+// walls scanned from one station (density falling with the square of range, range noise) keep every
+// surface point while single strays beside the walls, above the floor and between two surfaces are
+// left out; a clean plane and a plane with Kinect-like depth noise lose nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // The PCL glue puts a noisy scan's points on the surface they measured (sssPclSurfels.h,
-// core/surfels/denoised_surface.h): a plane with Gaussian depth noise comes back flat, with the noise
-// it carried measured per point in a "Noise" array and summarised; off, the points stay.
+// core/surfels/denoised_surface.h): a plane with Gaussian depth noise comes back flat, with the
+// noise it carried measured per point in a "Noise" array and summarised; off, the points stay.
 #include <gtest/gtest.h>
 #include <pcl/point_types.h>
 #include <vtkDataArray.h>

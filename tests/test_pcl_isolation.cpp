@@ -1,6 +1,6 @@
-// The PCL glue leaves isolated points out of the surfels (sssPclSurfels.h, core/surfels/isolated_points.h):
-// a plane with a few strays off it keeps every plane point and none of the strays, says so in
-// its summary, and keeps them all when asked to.
+// The PCL glue leaves isolated points out of the surfels (sssPclSurfels.h,
+// core/surfels/isolated_points.h): a plane with a few strays off it keeps every plane point and
+// none of the strays, says so in its summary, and keeps them all when asked to.
 #include <gtest/gtest.h>
 #include <pcl/point_types.h>
 #include <vtkPolyData.h>

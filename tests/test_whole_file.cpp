@@ -1,5 +1,5 @@
-// Outputs written whole or not at all (core/support/whole_file.h): a process killed in the middle of
-// a write leaves the old file, or none, never a part of the new one; a failed write keeps the
+// Outputs written whole or not at all (core/support/whole_file.h): a process killed in the middle
+// of a write leaves the old file, or none, never a part of the new one; a failed write keeps the
 // old file and leaves no temporary behind.
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,10 +1,10 @@
-// Step 1, the light's view: an illumination map rendered from each light over the surfel
-// discs with a depth test (along parallel rays for a directional light, from its position for
-// a point light: the light's projection is the one thing a new kind of light adds), each disc of the radius that closes the surface, at least
-// the cells' (LocalSurfels::disc_radius), so that light does not leak through gaps between
-// them. Each texel keeps the disc it sees and how far along the light that disc is; the
-// irradiance step (surfel_irradiance.h) asks it which points of a surfel's cell the light
-// reaches (self-shadowing comes for free).
+// Step 1, the light's view: an illumination map rendered from each light over the surfel discs with
+// a depth test (along parallel rays for a directional light, from its position for a point light:
+// the light's projection is the one thing a new kind of light adds), each disc of the radius that
+// closes the surface, at least the cells' (LocalSurfels::disc_radius), so that light does not leak
+// through gaps between them. Each texel keeps the disc it sees and how far along the light that
+// disc is; the irradiance step (surfel_irradiance.h) asks it which points of a surfel's cell the
+// light reaches (self-shadowing comes for free).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,10 +1,10 @@
-// The area each surfel stands for (dA of eq. 16): its cell, the part of its tangent plane
-// within its disc (LocalSurfels::disc_radius: the radius that closes the surface, at least
-// the cells' radius) that lies nearer to it than to any other surfel of the
-// same surface (a Voronoi cell clipped to the disc, cell_polygon.h). Cells tile the sampled surface whatever
-// the sampling (regular, random, or thinning with range as a scanner sees it), and stop where
-// the discs stop covering it (an open edge, a hole). Each cell's outline is kept in its
-// surfel's tangent frame (local_surface.h) for the near field (near_field.h).
+// The area each surfel stands for (dA of eq. 16): its cell, the part of its tangent plane within
+// its disc (LocalSurfels::disc_radius: the radius that closes the surface, at least the cells'
+// radius) that lies nearer to it than to any other surfel of the same surface (a Voronoi cell
+// clipped to the disc, cell_polygon.h). Cells tile the sampled surface whatever the sampling
+// (regular, random, or thinning with range as a scanner sees it), and stop where the discs stop
+// covering it (an open edge, a hole). Each cell's outline is kept in its surfel's tangent frame
+// (local_surface.h) for the near field (near_field.h).
 #pragma once
 
 #include <Eigen/Core>

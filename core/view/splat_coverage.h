@@ -1,13 +1,13 @@
-// How large the splats must be for the surface to read as closed. Each surfel's cell is its
-// Voronoi cell among its nearest neighbours on the same surface, in its tangent plane; a disc
-// covers its cell when it reaches the cell's farthest corner. A uniform radius r leaves
-// uncovered the parts of the cells farther than r from their surfel, an area measured exactly
-// (disc-polygon intersection); the uniform radius is the smallest one whose uncovered fraction
-// meets a target. A cell ends where its neighbours do (their convex hull): at the edge of a
-// scan, or of a hole wider than the neighbourhood, the surface ends, and the splats need not
-// close it. A surfel whose 16 nearest neighbours leave its cell open is left out. Where the density varies (a scanner's thins with the square of range), one
-// radius large enough for the sparse parts blurs the dense ones: then each surfel gets its
-// own cell's reach.
+// How large the splats must be for the surface to read as closed. Each surfel's cell is its Voronoi
+// cell among its nearest neighbours on the same surface, in its tangent plane; a disc covers its
+// cell when it reaches the cell's farthest corner. A uniform radius r leaves uncovered the parts of
+// the cells farther than r from their surfel, an area measured exactly (disc-polygon intersection);
+// the uniform radius is the smallest one whose uncovered fraction meets a target. A cell ends where
+// its neighbours do (their convex hull): at the edge of a scan, or of a hole wider than the
+// neighbourhood, the surface ends, and the splats need not close it. A surfel whose 16 nearest
+// neighbours leave its cell open is left out. Where the density varies (a scanner's thins with the
+// square of range), one radius large enough for the sparse parts blurs the dense ones: then each
+// surfel gets its own cell's reach.
 #pragma once
 
 #include <Eigen/Core>

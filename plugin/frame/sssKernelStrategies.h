@@ -1,5 +1,6 @@
 // The table of kernel strategies (sssStrategy.h), one row each: a new strategy is a row in
-// sssKernelStrategies.cxx (and its name in core/settings/quality_settings.h), its class and its shaders.
+// sssKernelStrategies.cxx (and its name in core/settings/quality_settings.h), its class and its
+// shaders.
 #ifndef sssKernelStrategies_h
 #define sssKernelStrategies_h
 

@@ -1,9 +1,9 @@
 // Step 2 on the GPU (the NEAR_FAR strategy), in order: the surfel list (sssSurfelList), each
-// surfel's cell lit through the light maps with its source pyramid (sssLitCells), the near
-// field from a table the light does not change (sssNearFieldTable) and the far field by a walk
-// of the lit cells' pyramid (sssFarField). The same model as the CPU reference
-// (core/reference/reference_renderer.h): the bake (cells, the near-field table, the surfel list) runs on
-// the CPU when the geometry, the material or a setting changes; a light move runs three GPU
+// surfel's cell lit through the light maps with its source pyramid (sssLitCells), the near field
+// from a table the light does not change (sssNearFieldTable) and the far field by a walk of the lit
+// cells' pyramid (sssFarField). The same model as the CPU reference
+// (core/reference/reference_renderer.h): the bake (cells, the near-field table, the surfel list)
+// runs on the CPU when the geometry, the material or a setting changes; a light move runs three GPU
 // passes per light and the near and far field's passes over all surfels.
 #ifndef sssNearFarStrategy_h
 #define sssNearFarStrategy_h

@@ -142,7 +142,8 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   report.map_height = maps.map_height;
   report.texel_mm = maps.texel_mm;
   report.notes = maps.notes;
-  if (!g.strategy->light(window, g.maps, *g.dipole, finish, g.resolve, g.buffers.points, report, error))
+  if (!g.strategy->light(
+        window, g.maps, *g.dipole, finish, g.resolve, g.buffers.points, report, error))
   {
     return false;
   }

@@ -56,6 +56,56 @@ const std::string& PaperFragmentShader()
   static const std::string fs = shader_with_pieces(sss_illumination_fs, "");
   return fs;
 }
+
+// A light's map as a GL view of the local frame: its rows (the map's axes), the model-view
+// matrix and the projection (a frustum through a positional light's image plane at unit
+// distance, or the orthographic box of a directional light's map), `reach` mm deep.
+struct MapMatrices
+{
+  Eigen::Matrix3d rows;
+  Eigen::Matrix4d model_to_view, view_to_clip;
+};
+
+MapMatrices map_matrices(const LightView& view, double reach)
+{
+  MapMatrices m;
+  if (view.from_point)
+  {
+    const PerspectiveView& p = view.perspective;
+    m.rows << p.u.transpose(), p.v.transpose(), p.w.transpose();
+    m.model_to_view = Eigen::Matrix4d::Identity();
+    m.model_to_view.block<3, 3>(0, 0) = m.rows;
+    m.model_to_view.block<3, 1>(0, 3) = -m.rows * p.eye;
+    // A frustum through the map's image plane at unit distance, from half the nearest
+    // point's distance to past the farthest.
+    const double near = 0.5 * p.nearest, far = (p.eye.norm() + reach) * 2.0;
+    const double left = p.corner.x(), right = p.corner.x() + p.width * p.pixel;
+    const double bottom = p.corner.y(), top = p.corner.y() + p.height * p.pixel;
+    m.view_to_clip = Eigen::Matrix4d::Zero();
+    m.view_to_clip(0, 0) = 2.0 / (right - left);
+    m.view_to_clip(0, 2) = (right + left) / (right - left);
+    m.view_to_clip(1, 1) = 2.0 / (top - bottom);
+    m.view_to_clip(1, 2) = (top + bottom) / (top - bottom);
+    m.view_to_clip(2, 2) = -(far + near) / (far - near);
+    m.view_to_clip(2, 3) = -2.0 * far * near / (far - near);
+    m.view_to_clip(3, 2) = -1.0;
+  }
+  else
+  {
+    const OrthoView& o = view.ortho;
+    m.rows << o.u.transpose(), o.v.transpose(), o.w.transpose();
+    m.model_to_view = Eigen::Matrix4d::Identity();
+    m.model_to_view.block<3, 3>(0, 0) = m.rows;
+    m.view_to_clip = Eigen::Matrix4d::Zero();
+    m.view_to_clip(0, 0) = 2.0 / (o.width * o.pixel);
+    m.view_to_clip(0, 3) = -2.0 * o.corner.x() / (o.width * o.pixel) - 1.0;
+    m.view_to_clip(1, 1) = 2.0 / (o.height * o.pixel);
+    m.view_to_clip(1, 3) = -2.0 * o.corner.y() / (o.height * o.pixel) - 1.0;
+    m.view_to_clip(2, 2) = -1.0 / reach;
+    m.view_to_clip(3, 3) = 1.0;
+  }
+  return m;
+}
 }
 
 LightMapAtlas GpuLightMaps::atlas() const
@@ -108,6 +158,95 @@ void GpuLightMaps::allocate(vtkOpenGLRenderWindow* window, bool paper, int width
   height_ = height;
 }
 
+void GpuLightMaps::lay_out(const LocalSurfels& local, const std::vector<GpuLight>& lights,
+  const MapFit& fit, std::vector<PieceMap>& fits, LightMapReport& report, int& atlas_w,
+  int& atlas_h)
+{
+  maps_.clear();
+  report.notes.clear();
+  atlas_w = 0;
+  atlas_h = 1;
+  for (const GpuLight& light : lights)
+  {
+    LightMapAtlas::Map map;
+    map.light = LocalLight::of(light.light, local.frame);
+    map.irradiance = light.irradiance;
+    if (map.light.positional && fit.directional_only)
+    {
+      report.notes.push_back("the paper's method takes a positional light as directional, from "
+                             "its focal point towards it");
+      map.light.positional = false;
+    }
+    if (fit.pieces)
+    {
+      if (map.light.positional)
+      {
+        report.notes.push_back("a cloud split into pieces takes a positional light as "
+                               "directional, from its focal point towards it");
+        map.light.positional = false;
+      }
+      fits.push_back(
+        fit_over_pieces(fit.pieces, &local, map.light.direction, fit.texel, fit.max_size));
+      map.view = LightView{};
+      map.view.ortho = fits.back().view;
+    }
+    else
+    {
+      try
+      {
+        map.view = fit_light_view(local, map.light, fit.texel, fit.max_size);
+      }
+      catch (const std::invalid_argument& e)  // a point light among the points
+      {
+        report.notes.push_back(std::string(e.what()) +
+          "; it is taken as directional, from its focal point towards it");
+        map.light.positional = false;
+        map.view = fit_light_view(local, map.light, fit.texel, fit.max_size);
+      }
+    }
+    map.x = atlas_w;
+    atlas_w += map.width();
+    atlas_h = std::max(atlas_h, map.height());
+    maps_.push_back(map);
+  }
+}
+
+vtkShaderProgram* GpuLightMaps::ready_program(
+  vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers, const LightMapRequest& request)
+{
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    LightMapVertexShader(request.paper).c_str(),
+    request.paper ? PaperFragmentShader().c_str() : sss_light_map_surfel_fs, sss_surfel_gs);
+  if (!program)
+  {
+    return nullptr;
+  }
+  vtkOpenGLVertexArrayObject* vao = vao_.vao;
+  vao->Bind();
+  if (vao_.needs(program))
+  {
+    vao->ReleaseGraphicsResources();
+    vao->Bind();
+    vao->AddAttributeArray(program, buffers.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(program, buffers.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(program, buffers.disc_radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
+    if (request.paper)
+    {
+      vao->AddAttributeArray(
+        program, buffers.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+      vao->AddAttributeArray(
+        program, buffers.curvatures, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
+    }
+    else
+    {
+      vao->AddAttributeArray(
+        program, request.list_texel, "listTexelMC", 0, 8, VTK_FLOAT, 2, false);
+    }
+    vao_.program = program;
+  }
+  return program;
+}
+
 bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers,
   const LocalSurfels& local, const std::vector<GpuLight>& lights, const LightMapRequest& request,
   const Material& material, bool albedo_from_colour, LightMapReport& report, std::string& error)
@@ -125,51 +264,8 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
   vtkSubsurfacePieces* pieces =
     !paper && request.pieces && request.pieces->GetNumberOfPieces() > 1 ? request.pieces : nullptr;
   std::vector<PieceMap> fits;
-  maps_.clear();
-  report.notes.clear();
   int atlas_w = 0, atlas_h = 1;
-  for (const GpuLight& light : lights)
-  {
-    LightMapAtlas::Map map;
-    map.light = LocalLight::of(light.light, local.frame);
-    map.irradiance = light.irradiance;
-    if (map.light.positional && paper)
-    {
-      report.notes.push_back("the paper's method takes a positional light as directional, from "
-                             "its focal point towards it");
-      map.light.positional = false;
-    }
-    if (pieces)
-    {
-      if (map.light.positional)
-      {
-        report.notes.push_back("a cloud split into pieces takes a positional light as "
-                               "directional, from its focal point towards it");
-        map.light.positional = false;
-      }
-      fits.push_back(fit_over_pieces(pieces, &local, map.light.direction, texel, max_size));
-      map.view = LightView{};
-      map.view.ortho = fits.back().view;
-    }
-    else
-    {
-      try
-      {
-        map.view = fit_light_view(local, map.light, texel, max_size);
-      }
-      catch (const std::invalid_argument& e)  // a point light among the points
-      {
-        report.notes.push_back(std::string(e.what()) +
-          "; it is taken as directional, from its focal point towards it");
-        map.light.positional = false;
-        map.view = fit_light_view(local, map.light, texel, max_size);
-      }
-    }
-    map.x = atlas_w;
-    atlas_w += map.width();
-    atlas_h = std::max(atlas_h, map.height());
-    maps_.push_back(map);
-  }
+  lay_out(local, lights, MapFit{ paper, texel, max_size, pieces }, fits, report, atlas_w, atlas_h);
   atlas_w = std::max(atlas_w, 1);
   int max_texture = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
@@ -217,37 +313,12 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    LightMapVertexShader(paper).c_str(),
-    paper ? PaperFragmentShader().c_str() : sss_light_map_surfel_fs, sss_surfel_gs);
+  vtkShaderProgram* program = ready_program(window, buffers, request);
   if (!program)
   {
     error = "the illumination-map shaders did not compile";
     state->PopFramebufferBindings();
     return false;
-  }
-  vtkOpenGLVertexArrayObject* vao = vao_.vao;
-  vao->Bind();
-  if (vao_.needs(program))
-  {
-    vao->ReleaseGraphicsResources();
-    vao->Bind();
-    vao->AddAttributeArray(program, buffers.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
-    vao->AddAttributeArray(program, buffers.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
-    vao->AddAttributeArray(program, buffers.disc_radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
-    if (paper)
-    {
-      vao->AddAttributeArray(
-        program, buffers.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
-      vao->AddAttributeArray(
-        program, buffers.curvatures, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
-    }
-    else
-    {
-      vao->AddAttributeArray(
-        program, request.list_texel, "listTexelMC", 0, 8, VTK_FLOAT, 2, false);
-    }
-    vao_.program = program;
   }
   set_eta_uniform(program, material);
   state->vtkglEnable(GL_DEPTH_TEST);
@@ -255,47 +326,11 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
   const double reach = 0.5 * local.bounds.extent().norm() + local.max_disc_radius() + 1.0;
   for (const LightMapAtlas::Map& map : maps_)
   {
-    Eigen::Matrix4d model_to_view, view_to_clip;
-    Eigen::Matrix3d rows;
-    if (map.view.from_point)
-    {
-      const PerspectiveView& p = map.view.perspective;
-      rows << p.u.transpose(), p.v.transpose(), p.w.transpose();
-      model_to_view = Eigen::Matrix4d::Identity();
-      model_to_view.block<3, 3>(0, 0) = rows;
-      model_to_view.block<3, 1>(0, 3) = -rows * p.eye;
-      // A frustum through the map's image plane at unit distance, from half the nearest
-      // point's distance to past the farthest.
-      const double near = 0.5 * p.nearest, far = (p.eye.norm() + reach) * 2.0;
-      const double left = p.corner.x(), right = p.corner.x() + p.width * p.pixel;
-      const double bottom = p.corner.y(), top = p.corner.y() + p.height * p.pixel;
-      view_to_clip = Eigen::Matrix4d::Zero();
-      view_to_clip(0, 0) = 2.0 / (right - left);
-      view_to_clip(0, 2) = (right + left) / (right - left);
-      view_to_clip(1, 1) = 2.0 / (top - bottom);
-      view_to_clip(1, 2) = (top + bottom) / (top - bottom);
-      view_to_clip(2, 2) = -(far + near) / (far - near);
-      view_to_clip(2, 3) = -2.0 * far * near / (far - near);
-      view_to_clip(3, 2) = -1.0;
-    }
-    else
-    {
-      const OrthoView& o = map.view.ortho;
-      rows << o.u.transpose(), o.v.transpose(), o.w.transpose();
-      model_to_view = Eigen::Matrix4d::Identity();
-      model_to_view.block<3, 3>(0, 0) = rows;
-      view_to_clip = Eigen::Matrix4d::Zero();
-      view_to_clip(0, 0) = 2.0 / (o.width * o.pixel);
-      view_to_clip(0, 3) = -2.0 * o.corner.x() / (o.width * o.pixel) - 1.0;
-      view_to_clip(1, 1) = 2.0 / (o.height * o.pixel);
-      view_to_clip(1, 3) = -2.0 * o.corner.y() / (o.height * o.pixel) - 1.0;
-      view_to_clip(2, 2) = -1.0 / reach;
-      view_to_clip(3, 3) = 1.0;
-    }
-    const Eigen::Matrix4f model_to_view_f = model_to_view.cast<float>();
-    const Eigen::Matrix4f view_to_clip_f = view_to_clip.cast<float>();
-    const Eigen::Matrix3f normal_to_view = rows.cast<float>();
-    const Eigen::Matrix3f view_to_local = rows.transpose().cast<float>();
+    const MapMatrices m = map_matrices(map.view, reach);
+    const Eigen::Matrix4f model_to_view_f = m.model_to_view.cast<float>();
+    const Eigen::Matrix4f view_to_clip_f = m.view_to_clip.cast<float>();
+    const Eigen::Matrix3f normal_to_view = m.rows.cast<float>();
+    const Eigen::Matrix3f view_to_local = m.rows.transpose().cast<float>();
     program->SetUniformMatrix4x4("modelToView", const_cast<float*>(model_to_view_f.data()));
     program->SetUniformMatrix3x3("normalToView", const_cast<float*>(normal_to_view.data()));
     program->SetUniformMatrix4x4("viewToClip", const_cast<float*>(view_to_clip_f.data()));
@@ -318,7 +353,7 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
     state->vtkglViewport(map.x, 0, map.width(), map.height());
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(buffers.count));
   }
-  vao->Release();
+  vao_.vao->Release();
   if (pieces)
   {
     combine_pieces(pieces, fits, reach);

@@ -22,6 +22,7 @@
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkSubsurfacePieces;
 class vtkWindow;
 
@@ -99,6 +100,23 @@ public:
   void release(vtkWindow* window);
 
 private:
+  // How each light's map is fitted: as directional only (the paper's), texels of `texel` mm
+  // up to `max_size` a side, over every piece of a split cloud (or none).
+  struct MapFit
+  {
+    bool directional_only;
+    double texel;
+    int max_size;
+    vtkSubsurfacePieces* pieces;
+  };
+  // Each light's view fitted to the surfels, placed side by side in the atlas (maps_); the
+  // atlas's size, and the pieces' fits.
+  void lay_out(const LocalSurfels& local, const std::vector<GpuLight>& lights, const MapFit& fit,
+    std::vector<PieceMap>& fits, LightMapReport& report, int& atlas_w, int& atlas_h);
+  // The maps' program for the request's kind of map, its VAO bound to `buffers`; nullptr if
+  // it did not compile.
+  vtkShaderProgram* ready_program(
+    vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers, const LightMapRequest& request);
   // Over pieces: keeps in each texel the surface nearest the light over all of them.
   long combine_pieces(vtkSubsurfacePieces* pieces, const std::vector<PieceMap>& fits,
     double reach);

@@ -27,12 +27,12 @@ uniform float farFrom;        // mm
 const int cellRulePieces = 64;  // cellRd's pieces are at least a 64th of the disc's area
 const int wideCellsPerWalk = 16;  // most cells a walk sums by cellRd; the rest by expansion
 
-// Eq. 3 over a cell's disc (centre p, unit normal n, radius r) at distance d from x by
-// equal-area rings about a piece wide (max(z_r / 2, d / 4), and no finer than the disc's area
-// over cellRulePieces), each with points a piece apart at even angles: a rule whose first
-// moment vanishes and whose second is the disc's (at most about 100 points), as the CPU
-// reference sums a near source (core/far_field/source_tree.cpp add_sample). For the cells near x whose
-// disc is too wide for the second-order expansion.
+// Eq. 3 over a cell's disc (centre p, unit normal n, radius r) at distance d from x by equal-area
+// rings about a piece wide (max(z_r / 2, d / 4), and no finer than the disc's area over
+// cellRulePieces), each with points a piece apart at even angles: a rule whose first moment
+// vanishes and whose second is the disc's (at most about 100 points), as the CPU reference sums a
+// near source (core/far_field/source_tree.cpp add_sample). For the cells near x whose disc is too
+// wide for the second-order expansion.
 vec3 cellRd(vec3 p, vec3 n, float r, vec3 x, float d)
 {
   float piece = max(max(0.5 * min(zR.r, min(zR.g, zR.b)), 0.25 * d),

@@ -1,7 +1,7 @@
-// The light maps of step 1, one atlas for every light (with the paper's pyramid above each
-// map): where each light's levels lie in the atlas, how a map lies in the local frame, and
-// the lights. A light's projection (core/light_map/light_map.h LightView) is the one thing a kind of
-// light adds: orthographic along a directional light, perspective from a positional one.
+// The light maps of step 1, one atlas for every light (with the paper's pyramid above each map):
+// where each light's levels lie in the atlas, how a map lies in the local frame, and the lights. A
+// light's projection (core/light_map/light_map.h LightView) is the one thing a kind of light adds:
+// orthographic along a directional light, perspective from a positional one.
 
 uniform int lightCount;
 uniform int levelCount[SSS_MAX_LIGHTS];
@@ -25,8 +25,8 @@ vec3 towardsLight(int light, vec3 y)
   return lightPositional[light] != 0 ? normalize(lightPosition[light] - y) : lightDirection[light];
 }
 
-// The irradiance at y on a surface facing the light, over lightIrradiance (core/light_map/light_map.h
-// LocalLight::irradiance_at: VTK's attenuation and spot).
+// The irradiance at y on a surface facing the light, over lightIrradiance
+// (core/light_map/light_map.h LocalLight::irradiance_at: VTK's attenuation and spot).
 float lightFalloff(int light, vec3 y)
 {
   if (lightPositional[light] == 0)

@@ -1,5 +1,5 @@
-// The test of core/light_map/light_map.h for whether the light reaches a point, against a map of which
-// surfel each texel sees (light_map_surfel_fs.glsl). Needs light_maps.glsl and
+// The test of core/light_map/light_map.h for whether the light reaches a point, against a map of
+// which surfel each texel sees (light_map_surfel_fs.glsl). Needs light_maps.glsl and
 // surfel_list.glsl.
 
 uniform sampler2D mapSurfel;   // xy: the seen surfel's texel in the surfel list; x = -1: none,
@@ -8,8 +8,8 @@ uniform float kappaLimitCell;  // 1/mm: the curvature clamp of a surfel's parabo
 
 // Whether the light reaches point y of a surface with cosine cosI to the light and surface
 // thickness `thickness` (mm): the local surface of the disc the map sees at y's texel
-// (core/light_map/light_map.cpp seen_point: the texel centre's ray meets the disc's plane at offset d,
-// lifted kappa |d|^2 / 2 below it) passes within thickness / cos of y along the light, or the
+// (core/light_map/light_map.cpp seen_point: the texel centre's ray meets the disc's plane at offset
+// d, lifted kappa |d|^2 / 2 below it) passes within thickness / cos of y along the light, or the
 // texel sees no disc (nothing stands in front); not where another piece of a distributed cloud
 // stands in front.
 bool lightReaches(int light, vec3 y, float cosI, float thickness)

@@ -1,5 +1,5 @@
-// Ft(eta, theta) per channel (core/material/fresnel.h, the exact dielectric formula) from a table over
-// cos(theta) in [0, 1], filtered linearly.
+// Ft(eta, theta) per channel (core/material/fresnel.h, the exact dielectric formula) from a table
+// over cos(theta) in [0, 1], filtered linearly.
 
 uniform sampler2D fresnelTable;
 uniform int fresnelTableSize;

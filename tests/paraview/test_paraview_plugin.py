@@ -86,7 +86,8 @@ def main():
         # fitted to every point and every point kept where it is, as pvbatch's ResetCamera and
         # reader do.
         run([os.environ["SSS_RENDER"], cloud, "--output", out("sss_render.png"), "--exposure",
-             "1", "--mm-per-unit", "1000", "--size", "400x400", "--view-dir", "0,0,1", "--up", "0,1,0",
+             "1", "--mm-per-unit", "1000", "--size", "400x400", "--view-dir", "0,0,1",
+             "--up", "0,1,0",
              "--light-dir", "-0.5,0.6,0.6", "--fit", "all", "--isolated", "keep",
              "--denoise", "off"])
         pvbatch(1, cloud, out("pvbatch.png"), *SCENE)
@@ -117,7 +118,8 @@ def main():
         n = int(sys.argv[3])
         scene = out("shadow_scene.ply")
         run(["bash", PVBATCH, os.path.join(HERE, "make_cloud.py"), "--shadow-scene", scene])
-        view = ["--mm-per-unit", "1000", "--view-dir=0.3,-0.6,1", "--up=0,1,0", "--light-dir=-1,0,1"]
+        view = ["--mm-per-unit", "1000", "--view-dir=0.3,-0.6,1", "--up=0,1,0",
+                "--light-dir=-1,0,1"]
         pvbatch(n, scene, out("shadow_whole_%d.png" % n), *view)
         # The ball alone on the first rank; the floor on the others, cut at x = 0.5 for three.
         cuts = "-0.05" if n == 2 else "-0.05,0.5"
