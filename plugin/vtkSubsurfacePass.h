@@ -30,6 +30,7 @@
 #include "sssTranslucencyModule.h"
 
 #include "vtkImageProcessingPass.h"
+#include "vtkSurfelMapper.h"
 
 #include <memory>
 #include <string>
@@ -45,7 +46,11 @@ class vtkActor;
 class vtkFloatArray;
 class vtkSubsurfacePieces;
 
-class SSSTRANSLUCENCY_EXPORT vtkSubsurfacePass : public vtkImageProcessingPass
+class SSSTRANSLUCENCY_EXPORT vtkSubsurfacePass
+  : public vtkImageProcessingPass
+#ifndef __VTK_WRAP__
+  , public vtkSurfelMapper::RadianceSource
+#endif
 {
 public:
   static vtkSubsurfacePass* New();
@@ -165,7 +170,11 @@ public:
    * actor carries a material and its steps are ready): vtkSurfelMapper then draws them as
    * translucent, with the pass's shader replacements.
    */
+#ifdef __VTK_WRAP__
   bool GivesRadianceTo(vtkActor* actor);
+#else
+  bool GivesRadianceTo(vtkActor* actor) override;  // vtkSurfelMapper::RadianceSource
+#endif
 
   /**
    * Shows the given B per input point (3 components, e.g. from the CPU reference) for this

@@ -2,7 +2,6 @@
 
 #include "sssGpuHelpers.h"
 #include "sssSurfelPreparation.h"
-#include "vtkSubsurfacePass.h"
 #include "sss_surfel_fs.h"
 #include "sss_surfel_normalise_fs.h"
 #include "sss_surfel_gs.h"
@@ -216,8 +215,8 @@ sss::SplatView MakeSplatView(
   view.passes = RenderPassesOf(act);
   for (vtkOpenGLRenderPass* pass : view.passes)
   {
-    auto* subsurface = vtkSubsurfacePass::SafeDownCast(pass);
-    view.translucent = view.translucent || (subsurface && subsurface->GivesRadianceTo(act));
+    auto* source = dynamic_cast<vtkSurfelMapper::RadianceSource*>(pass);
+    view.translucent = view.translucent || (source && source->GivesRadianceTo(act));
   }
   return view;
 }

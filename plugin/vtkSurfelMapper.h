@@ -161,6 +161,18 @@ public:
 
 #ifndef __VTK_WRAP__
   /**
+   * What a render pass declares when it gives the surfels their radiance (vtkSubsurfacePass
+   * does): for the actors it names, the mapper draws the surfels as translucent, with the
+   * pass's shader replacements (vtkOpenGLRenderPass's protocol).
+   */
+  class RadianceSource
+  {
+  public:
+    virtual ~RadianceSource() = default;
+    virtual bool GivesRadianceTo(vtkActor* actor) = 0;
+  };
+
+  /**
    * Brings the prepared surfels up to date with the input and returns them (for the pass).
    * Positions stay in scene units; the GPU buffers hold them relative to the bounds centre.
    */
