@@ -568,16 +568,21 @@ void vtkSurfelMapper::Normalise(
   Internals& impl = *this->Impl;
   std::unique_ptr<vtkOpenGLQuadHelper>& quad =
     view.translucent ? impl.NormaliseTranslucent : impl.NormalisePlain;
-  std::string fs = sss_surfel_normalise_fs;
-  if (!quad && view.translucent)
+  // The source is assembled once, when its quad is made.
+  std::string fs;
+  if (!quad)
   {
-    std::string noVertexShader, noGeometryShader;
-    for (vtkOpenGLRenderPass* pass : view.passes)
+    fs = sss_surfel_normalise_fs;
+    if (view.translucent)
     {
-      pass->PreReplaceShaderValues(noVertexShader, noGeometryShader, fs, this, act);
+      std::string noVertexShader, noGeometryShader;
+      for (vtkOpenGLRenderPass* pass : view.passes)
+      {
+        pass->PreReplaceShaderValues(noVertexShader, noGeometryShader, fs, this, act);
+      }
     }
+    vtkShaderProgram::Substitute(fs, "//SSS::Outgoing::Dec", "", true);
   }
-  vtkShaderProgram::Substitute(fs, "//SSS::Outgoing::Dec", "", true);
   vtkShaderProgram* normalise = sss::ready_quad(quad, renWin, fs.c_str());
   if (!normalise)
   {
