@@ -18,7 +18,8 @@ vtkInformationKeyMacro(vtkTranslucentMaterial, MATERIAL, ObjectBase);
 
 vtkTranslucentMaterial::vtkTranslucentMaterial()
 {
-  this->SetPreset("marble");
+  this->SetPreset(sss::kDefaultPreset);
+  this->Eta = sss::kDefaultEta;
 }
 
 bool vtkTranslucentMaterial::SetPreset(const char* name)

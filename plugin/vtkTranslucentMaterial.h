@@ -95,7 +95,7 @@ protected:
   std::string Name;
   double SigmaA[3];
   double SigmaSPrime[3];
-  double Eta = 1.3;
+  double Eta;  // sss::kDefaultEta
   double MillimetresPerUnit = 1.0;
   bool ColoursAsAlbedo = false;
 

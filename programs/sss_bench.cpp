@@ -389,7 +389,7 @@ void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
   const std::vector<sss::Light> lights{{cloud.light, 1.0}};
   auto window = make_window(o);
   TranslucentScene scene(window, cloud.surfels,
-                         sss::Material::preset(materials[0], 1.3, cloud.mm_per_unit), lights);
+                         sss::Material::preset(materials[0], sss::kDefaultEta, cloud.mm_per_unit), lights);
   scene.aim_camera(cloud.surfels.positions, cloud.view_dir, cloud.up, false);
   scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
   scene.window->Render();
@@ -399,7 +399,7 @@ void run_sweep(const Options& o, const Cloud& cloud, std::ostream& csv) {
   settings.progress = print_progress;
   settings.receivers = error_points(cloud.surfels.size());
   for (const std::string& name : materials) {
-    const sss::Material material = sss::Material::preset(name, 1.3, cloud.mm_per_unit);
+    const sss::Material material = sss::Material::preset(name, sss::kDefaultEta, cloud.mm_per_unit);
     scene.set_material(material);
     sss::ReferenceCacheStatus status;
     const sss::SurfelRadiance reference =
@@ -476,7 +476,7 @@ void run_scale(const Options& o, std::ostream& csv) {
     return;
   }
   const double mm_per_unit = procedural ? 1.0 : (o.scale_mesh.empty() ? 1000.0 : o.mm_per_unit);
-  const sss::Material material = sss::Material::preset(o.materials[0], 1.3, mm_per_unit);
+  const sss::Material material = sss::Material::preset(o.materials[0], sss::kDefaultEta, mm_per_unit);
   std::vector<std::string> over_budget;
   for (std::size_t n : o.scale_points) {
     reset_peak_rss();

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,14 +29,15 @@ namespace {
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
-const char* kUsage = R"(usage: sss_view [INPUT.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc] [options]
+std::string usage() {
+  std::ostringstream text;
+  text << R"(usage: sss_view [INPUT.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc] [options]
 
 Shows INPUT (default: a procedural torus, 30 mm across its tube ring) translucent in a
 PCLVisualizer window. Needs an X display (or Xvfb).
 
 options (default in brackets)
-  --material NAME      preset: apple chicken1 chicken2 cream ketchup marble potato skimmilk
-                       skin1 skin2 spectralon wholemilk [marble]
+  --material NAME      measured preset [)" << sss::kDefaultPreset << R"(], one of)" << sss::cli::preset_list(23) << R"(
   --mm-per-unit F      millimetres per scene unit, e.g. 1000 for a scan in metres [1]
   --quality Q          interactive | balanced | accurate: how finely B is summed when the
                        light or material changes (balanced: the pass's defaults; interactive
@@ -64,10 +66,12 @@ keys (besides PCL's: drag to orbit, scroll to zoom, r reset camera, j screenshot
   z            automatic exposure (the 99.5th percentile of the visible radiance is white)
   h            this list (and PCL's)
 )";
+  return text.str();
+}
 
 struct Options {
   std::string input;
-  std::string material = "marble";
+  std::string material = sss::kDefaultPreset;
   double mm_per_unit = 1.0;
   sss::Quality quality = sss::Quality::Balanced;
   std::size_t samples = 0;
@@ -87,7 +91,7 @@ Options parse(int argc, char** argv) {
     const std::string& flag = args.flag();
     const auto value = [&args] { return args.value(); };
     if (flag == "--help" || flag == "-h") {
-      std::fputs(kUsage, stdout);
+      std::fputs(usage().c_str(), stdout);
       std::exit(0);
     } else if (flag == "--material") {
       o.material = value();
@@ -200,7 +204,7 @@ struct Viewer {
     } else if (key == "z") {
       cloud.autoExpose();
     } else if (key == "h") {
-      std::fputs(kUsage, stdout);
+      std::fputs(usage().c_str(), stdout);
       std::printf("drawn by %s\n",
                   sss::cli::renderer_info(pcl_viewer.getRenderWindow()).summary().c_str());
       std::printf("last light move: %s\n", cloud.pass()->GetLastLightMoveProfile().c_str());

@@ -18,6 +18,7 @@
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 
+#include "material.h"
 #include "surfel_cloud.h"
 
 #include <algorithm>
@@ -59,7 +60,9 @@ double mean_spacing(vtkPointSet* input)
 
 vtkTranslucentSurfelsRepresentation::vtkTranslucentSurfelsRepresentation()
 {
-  this->Material->SetPreset("marble");
+  // The material starts as the default preset (material_presets.def), as the XML's defaults.
+  this->MaterialName = sss::kDefaultPreset;
+  this->CustomEta = this->Material->GetEta();
   std::copy_n(this->Material->GetSigmaA(), 3, this->CustomSigmaA);
   std::copy_n(this->Material->GetSigmaSPrime(), 3, this->CustomSigmaSPrime);
   this->Material->ApplyTo(this->Actor);

@@ -71,10 +71,10 @@ protected:
   // Applies the custom coefficients when the material is "custom".
   void UpdateMaterial();
 
-  std::string MaterialName = "marble";
+  std::string MaterialName;
   double CustomSigmaA[3];
   double CustomSigmaSPrime[3];
-  double CustomEta = 1.3;
+  double CustomEta;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkSurfelMapper> Mapper;
   vtkNew<vtkTranslucentMaterial> Material;

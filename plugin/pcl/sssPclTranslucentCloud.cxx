@@ -80,7 +80,7 @@ TranslucentCloud::TranslucentCloud(pcl::visualization::PCLVisualizer& viewer, st
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper_);
   material_ = vtkSmartPointer<vtkTranslucentMaterial>::New();
-  if (!material_->SetPreset(options.material.c_str()))
+  if (!options.material.empty() && !material_->SetPreset(options.material.c_str()))
     throw std::invalid_argument("unknown material \"" + options.material + "\"");
   material_->SetMillimetresPerUnit(options.millimetres_per_unit);
   material_->SetColoursAsAlbedo(surfels_.has_colours);

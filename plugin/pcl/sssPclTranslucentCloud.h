@@ -35,7 +35,7 @@ const char* qualityName(Quality quality);
 bool qualityFromName(const std::string& name, Quality& quality);
 
 struct TranslucentCloudOptions {
-  std::string material = "marble";  // a vtkTranslucentMaterial preset
+  std::string material;  // a vtkTranslucentMaterial preset; empty: its default (marble)
   double millimetres_per_unit = 1.0;
   Quality quality = Quality::Balanced;  // the pass's defaults
   SurfelOptions surfels;

@@ -74,6 +74,18 @@ Eigen::Vector3d direction(const std::string& flag, const std::string& text) {
 
 }  // namespace
 
+std::string preset_list(std::size_t indent) {
+  std::string text, line;
+  for (const std::string& name : Material::preset_names()) {
+    if (!line.empty() && indent + line.size() + 1 + name.size() > 92) {
+      text += "\n" + std::string(indent, ' ') + line;
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + name;
+  }
+  return text + "\n" + std::string(indent, ' ') + line;
+}
+
 std::string usage() {
   vtkNew<vtkSubsurfacePass> pass;  // its defaults are the defaults below
   std::ostringstream text;
@@ -91,11 +103,10 @@ usage: sss_render [INPUT.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc] [options]
                             outgoing radiance towards the camera (float red, green, blue), in
                             input order, finite points only
   --stats F.json            time of each step, counts and every setting used
-  --material NAME           measured preset (default marble): apple chicken1 chicken2 cream
-                            ketchup marble potato skimmilk skin1 skin2 spectralon wholemilk
+  --material NAME           measured preset (default )" << sss::kDefaultPreset << R"(), one of)" << preset_list(28) << R"(
   --sigma-a R,G,B           custom absorption, 1/mm (with --sigma-s; replaces --material)
   --sigma-s R,G,B           custom reduced scattering sigma_s', 1/mm
-  --eta V                   relative index of refraction (default 1.3)
+  --eta V                   relative index of refraction (default )" << sss::kDefaultEta << R"()
   --mm-per-unit MM          millimetres per scene unit (default 1; 1000 for scans in metres)
   --scale MM                the same as --mm-per-unit (its older name)
   --light-dir X,Y,Z         from the object towards a directional light; repeatable, up to 4

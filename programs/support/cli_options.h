@@ -23,10 +23,10 @@ struct Options {
   std::string input;  // empty: the procedural demo shape
   std::string output_png = "sss_render.png";
   std::string linear_pfm, stats_json, bake_ply;
-  std::string material = "marble";
+  std::string material = kDefaultPreset;
   bool custom_material = false;
   Rgb sigma_a{}, sigma_s{};
-  double eta = 1.3;
+  double eta = kDefaultEta;
   double mm_per_unit = 1.0;  // millimetres per scene unit
   std::vector<Eigen::Vector3d> light_dirs;
   std::vector<Eigen::Vector3d> point_lights;   // positions, scene units
@@ -112,6 +112,9 @@ bool on_off(const std::string& flag, const std::string& text);
 double isolation_ratio(const std::string& flag, const std::string& text);
 // --memory-cap's value, MiB, in bytes.
 std::size_t memory_cap(const std::string& flag, const std::string& text);
+// The presets' names on lines of their own, indented by `indent` and ending before column 92,
+// each line after a line break.
+std::string preset_list(std::size_t indent);
 std::string usage();
 
 }  // namespace sss::cli
