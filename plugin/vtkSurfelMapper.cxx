@@ -1,6 +1,7 @@
 #include "vtkSurfelMapper.h"
 
 #include "sssGpuHelpers.h"
+#include "sssSurfelBuffers.h"
 #include "sssSurfelPreparation.h"
 #include "sss_surfel_fs.h"
 #include "sss_surfel_normalise_fs.h"
@@ -32,6 +33,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -42,14 +44,11 @@ struct vtkSurfelMapper::Internals
   sss::PreparedSurfels Prepared;
   vtkTimeStamp PreparedTime;
   std::string ReportedProblem;
-  vtkNew<vtkOpenGLBufferObject> Positions;
-  vtkNew<vtkOpenGLBufferObject> Normals;
-  vtkNew<vtkOpenGLBufferObject> Colours;
-  vtkNew<vtkOpenGLBufferObject> Radii;
+  sss::SurfelBuffers Buffers;  // shared with the views from the lights
+  vtkNew<vtkOpenGLBufferObject> Radii;  // the view's, with per-point radii
   // One vertex array per SPLAT_PASS, so that passes do not rebind attributes every frame.
   vtkNew<vtkOpenGLVertexArrayObject> VAO[3];
   vtkShaderProgram* BoundProgram[3] = { nullptr, nullptr, nullptr };
-  vtkTimeStamp UploadTime;
 
   // Blended splatting: the scene's depth with the splats' pushed back, and the weighted sums.
   vtkNew<vtkOpenGLFramebufferObject> SplatBuffer;
@@ -58,7 +57,7 @@ struct vtkSurfelMapper::Internals
   bool WarnedBlit = false;
   std::unique_ptr<vtkOpenGLQuadHelper> NormalisePlain, NormaliseTranslucent;
 
-  // The prepared surfels as vertex buffers: positions relative to the bounds centre.
+  // The prepared surfels as vertex buffers (sssSurfelBuffers) and the view's radii.
   void BuildBufferObjects(const sss::PreparedSurfels& prepared);
 
   void ReleaseSplatBuffers(vtkWindow* window)
@@ -72,27 +71,14 @@ struct vtkSurfelMapper::Internals
 
 void vtkSurfelMapper::Internals::BuildBufferObjects(const sss::PreparedSurfels& prepared)
 {
-  const std::size_t n = prepared.cloud.size();
   const bool perPoint = prepared.per_point_radii;
-  std::vector<float> positions(3 * n), normals(3 * n), radii(perPoint ? n : 1, 0.0f);
-  for (std::size_t i = 0; i < n; ++i)
+  std::vector<float> radii(perPoint ? prepared.cloud.size() : 1, 0.0f);
+  if (perPoint)
   {
-    for (int c = 0; c < 3; ++c)
-    {
-      positions[3 * i + c] =
-        static_cast<float>(prepared.cloud.positions[i][c] - prepared.centre[c]);
-      normals[3 * i + c] = static_cast<float>(prepared.cloud.normals[i][c]);
-    }
-    if (perPoint)
-    {
-      radii[i] = static_cast<float>(prepared.cloud.radii[i]);
-    }
+    std::copy(prepared.cloud.radii.begin(), prepared.cloud.radii.end(), radii.begin());
   }
-  this->Positions->Upload(positions, vtkOpenGLBufferObject::ArrayBuffer);
-  this->Normals->Upload(normals, vtkOpenGLBufferObject::ArrayBuffer);
-  this->Colours->Upload(prepared.rgba, vtkOpenGLBufferObject::ArrayBuffer);
+  this->Buffers.upload(prepared);
   this->Radii->Upload(radii, vtkOpenGLBufferObject::ArrayBuffer);
-  this->UploadTime.Modified();
   for (auto& bound : this->BoundProgram)
   {
     bound = nullptr;
@@ -271,9 +257,16 @@ const sss::PreparedSurfels& vtkSurfelMapper::UpdateSurfels(vtkActor* act)
   return p;
 }
 
-vtkMTimeType vtkSurfelMapper::GetSurfelsTime() const
+const sss::SurfelBuffers& vtkSurfelMapper::UpdateBuffers(vtkActor* act)
 {
-  return this->Impl->PreparedTime.GetMTime();
+  const sss::PreparedSurfels& prepared = this->UpdateSurfels(act);
+  Internals& impl = *this->Impl;
+  if (prepared.error.empty() && !prepared.cloud.empty() &&
+    impl.Buffers.upload_time < impl.PreparedTime)
+  {
+    impl.BuildBufferObjects(prepared);
+  }
+  return impl.Buffers;
 }
 
 double vtkSurfelMapper::GetEffectiveRadius()
@@ -326,21 +319,17 @@ std::string vtkSurfelMapper::GetInputProblem()
 
 void vtkSurfelMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 {
-  const sss::PreparedSurfels& prepared = this->UpdateSurfels(act);
-  if (!prepared.error.empty() || prepared.cloud.empty())
-  {
-    return;
-  }
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!renWin)
   {
     vtkErrorMacro(<< "needs an OpenGL render window");
     return;
   }
-  Internals& impl = *this->Impl;
-  if (impl.UploadTime < impl.PreparedTime)
+  this->UpdateBuffers(act);
+  const sss::PreparedSurfels& prepared = this->Impl->Prepared;
+  if (!prepared.error.empty() || prepared.cloud.empty())
   {
-    impl.BuildBufferObjects(prepared);
+    return;
   }
   const sss::SplatView view = MakeSplatView(ren, act, prepared, this->BlendDepth);
   vtkOpenGLState* state = renWin->GetState();
@@ -395,11 +384,14 @@ bool vtkSurfelMapper::DrawSplats(
   {
     vao->ReleaseGraphicsResources();
     vao->Bind();
-    vao->AddAttributeArray(program, impl.Positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
-    vao->AddAttributeArray(program, impl.Normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(
+      program, impl.Buffers.positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(
+      program, impl.Buffers.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
     if (program->IsAttributeUsed("colourMC"))
     {
-      vao->AddAttributeArray(program, impl.Colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
+      vao->AddAttributeArray(
+        program, impl.Buffers.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
     }
     if (view.perPoint && program->IsAttributeUsed("radiusMC"))
     {
@@ -633,9 +625,7 @@ void vtkSurfelMapper::Normalise(
 
 void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->Impl->Positions->ReleaseGraphicsResources();
-  this->Impl->Normals->ReleaseGraphicsResources();
-  this->Impl->Colours->ReleaseGraphicsResources();
+  this->Impl->Buffers.release();
   this->Impl->Radii->ReleaseGraphicsResources();
   for (int k = 0; k < 3; ++k)
   {
@@ -643,7 +633,6 @@ void vtkSurfelMapper::ReleaseGraphicsResources(vtkWindow* window)
     this->Impl->BoundProgram[k] = nullptr;
   }
   this->Impl->ReleaseSplatBuffers(window);
-  this->Impl->UploadTime = vtkTimeStamp();
   this->Superclass::ReleaseGraphicsResources(window);
 }
 

@@ -43,6 +43,7 @@ class vtkShaderProgram;
 namespace sss
 {
 struct PreparedSurfels;
+struct SurfelBuffers;
 struct SplatView;
 }
 
@@ -177,8 +178,11 @@ public:
    * Positions stay in scene units; the GPU buffers hold them relative to the bounds centre.
    */
   const sss::PreparedSurfels& UpdateSurfels(vtkActor* act);
-  /** The time the prepared surfels last changed. */
-  vtkMTimeType GetSurfelsTime() const;
+  /**
+   * Brings the prepared surfels and their vertex buffers up to date (the buffers the views
+   * from the lights share; needs the window's context current) and returns the buffers.
+   */
+  const sss::SurfelBuffers& UpdateBuffers(vtkActor* act);
 #endif
 
 protected:

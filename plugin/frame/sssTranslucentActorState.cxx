@@ -1,6 +1,5 @@
 #include "sssTranslucentActorState.h"
 
-#include "sssSurfelBuffers.h"
 #include "sssSurfelResolve.h"
 
 #include "local_surfels.h"
@@ -38,7 +37,6 @@ struct TranslucentActorState::Gpu
 {
   LocalSurfels local;
   std::unique_ptr<Dipole> dipole;
-  SurfelBuffers buffers;
   GpuLightMaps maps;                  // step 1
   std::unique_ptr<Strategy> strategy;  // step 2, as the settings' kernel strategy runs it
   KernelStrategy strategy_kind = KernelStrategy::NearFar;
@@ -46,7 +44,6 @@ struct TranslucentActorState::Gpu
 
   void release(vtkWindow* window)
   {
-    buffers.release();
     maps.release(window);
     if (strategy)
     {
@@ -90,7 +87,7 @@ void TranslucentActorState::release(vtkWindow* window)
 }
 
 bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-  vtkMTimeType surfels_time, const Material& material, bool albedo_from_colour,
+  const SurfelBuffers& buffers, const Material& material, bool albedo_from_colour,
   const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
   vtkSubsurfacePieces* pieces, StepReport& report, std::string& error)
 {
@@ -100,6 +97,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
     key.insert(key.end(), { material.sigma_a[c], material.sigma_s_prime[c], material.eta[c] });
   }
   key.push_back(material.mm_per_unit);
+  const vtkMTimeType surfels_time = buffers.upload_time.GetMTime();
   const bool geometry_changed = !valid_ || surfels_time != geometry_time_ ||
     key != material_key_ || !(settings == geometry_settings_) ||
     albedo_from_colour != geometry_albedo_;
@@ -115,7 +113,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   Stopwatch clock;
   if (geometry_changed)
   {
-    if (!bake(window, surfels, albedo_from_colour, settings, report, error))
+    if (!bake(window, surfels, buffers, albedo_from_colour, settings, report, error))
     {
       return false;
     }
@@ -130,8 +128,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   LightMapReport maps;
   LightMapRequest request = g.strategy->light_map_request(settings);
   request.pieces = pieces;
-  if (!g.maps.render(window, g.buffers, g.local, lights, request, material_, albedo_from_colour,
-        maps, error))
+  if (!g.maps.render(window, buffers, g.local, lights, request, maps, error))
   {
     return false;
   }
@@ -143,7 +140,7 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   report.texel_mm = maps.texel_mm;
   report.notes = maps.notes;
   if (!g.strategy->light(
-        window, g.maps, *g.dipole, finish, g.resolve, g.buffers.points, report, error))
+        window, g.maps, *g.dipole, finish, g.resolve, buffers.positions, report, error))
   {
     return false;
   }
@@ -156,15 +153,21 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
 }
 
 bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-  bool albedo_from_colour, const QualitySettings& settings, StepReport& report, std::string& error)
+  const SurfelBuffers& buffers, bool albedo_from_colour, const QualitySettings& settings,
+  StepReport& report, std::string& error)
 {
   Gpu& g = *gpu_;
   g.local = LocalSurfels::from(surfels.cloud, material_.mm_per_unit);
   g.dipole = std::make_unique<Dipole>(material_);
   const std::size_t n = g.local.size();
-  g.buffers.upload(g.local, surfels.rgba);
-  g.maps.buffers_changed();
-  g.resolve.allocate(window, n);
+  if (buffers.count != n)
+  {
+    error = "the surfels' vertex buffers hold " + std::to_string(buffers.count) + " of " +
+      std::to_string(n) + " surfels";
+    return false;
+  }
+  g.resolve.allocate(window, n, material_.mm_per_unit);
+  g.maps.set_surfels(g.local, material_, albedo_from_colour);
   if (!g.strategy || g.strategy_kind != settings.strategy)
   {
     if (g.strategy)

@@ -10,6 +10,7 @@
 #include "quality_settings.h"
 #include "sssLightMaps.h"
 #include "sssKernelStrategies.h"
+#include "sssSurfelBuffers.h"
 #include "sssSurfelPreparation.h"
 
 #include "vtkNew.h"
@@ -44,9 +45,10 @@ public:
   // Runs steps 1-2 where their inputs changed. `finish` waits for the GPU after each step so
   // that the reported times are real. Returns false with `error` set when it cannot run.
   // With `pieces` (a cloud split over processes), step 1 runs on every piece when it must on
-  // any, and its maps are combined over them (sssLightMapPieces.h): collective.
+  // any, and its maps are combined over them (sssLightMapPieces.h): collective. `buffers` are
+  // the surfels' vertex buffers that the mapper uploaded (a new upload is a new geometry).
   bool update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-    vtkMTimeType surfels_time, const Material& material, bool albedo_from_colour,
+    const SurfelBuffers& buffers, const Material& material, bool albedo_from_colour,
     const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
     vtkSubsurfacePieces* pieces, StepReport& report, std::string& error);
 
@@ -73,12 +75,13 @@ private:
   struct Gpu;
   // The bake: what changes with the geometry, the material or a setting.
   bool bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-    bool albedo_from_colour, const QualitySettings& settings, StepReport& report, std::string& error);
+    const SurfelBuffers& buffers, bool albedo_from_colour, const QualitySettings& settings,
+    StepReport& report, std::string& error);
 
   std::unique_ptr<Gpu> gpu_;
   Material material_;
   std::vector<double> material_key_;
-  vtkMTimeType geometry_time_ = 0;
+  vtkMTimeType geometry_time_ = 0;  // the buffers' upload
   QualitySettings geometry_settings_;
   bool geometry_albedo_ = false;
   std::vector<GpuLight> lights_;

@@ -64,6 +64,7 @@ bool TranslucentActors::update_actor(vtkActor* actor, vtkOpenGLRenderWindow* win
     say("translucent material: " + invalid, true);
     return false;
   }
+  const SurfelBuffers& buffers = mapper->UpdateBuffers(actor);
   const PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
   const std::vector<GpuLight> local = lights_in_model_frame(lights, actor->GetMatrix());
   if (!surfels.error.empty())
@@ -104,7 +105,7 @@ bool TranslucentActors::update_actor(vtkActor* actor, vtkOpenGLRenderWindow* win
     return true;
   }
   StepReport report;
-  if (!state->update(window, surfels, mapper->GetSurfelsTime(), core,
+  if (!state->update(window, surfels, buffers, core,
         material->GetColoursAsAlbedo(), local, settings, finish, pieces, report, error))
   {
     say("subsurface scattering is off for an actor: " + error, true);

@@ -119,6 +119,8 @@ LightMapAtlas GpuLightMaps::atlas() const
 void GpuLightMaps::release(vtkWindow* window)
 {
   vao_.release();
+  curvatures_->ReleaseGraphicsResources();
+  disc_radii_->ReleaseGraphicsResources();
   release_held(window, point_, power_, normal_, surfel_, depth_);
   fbo_->ReleaseGraphicsResources(window);
   width_ = height_ = 0;
@@ -227,15 +229,15 @@ vtkShaderProgram* GpuLightMaps::ready_program(
   {
     vao->ReleaseGraphicsResources();
     vao->Bind();
-    vao->AddAttributeArray(program, buffers.points, "positionMC", 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(
+      program, buffers.positions, "positionMC", 0, 12, VTK_FLOAT, 3, false);
     vao->AddAttributeArray(program, buffers.normals, "normalMC", 0, 12, VTK_FLOAT, 3, false);
-    vao->AddAttributeArray(program, buffers.disc_radii, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
+    vao->AddAttributeArray(program, disc_radii_, "radiusMC", 0, 4, VTK_FLOAT, 1, false);
     if (request.paper)
     {
       vao->AddAttributeArray(
         program, buffers.colours, "colourMC", 0, 4, VTK_UNSIGNED_CHAR, 4, true);
-      vao->AddAttributeArray(
-        program, buffers.curvatures, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
+      vao->AddAttributeArray(program, curvatures_, "curvatureMC", 0, 4, VTK_FLOAT, 1, false);
     }
     else
     {
@@ -247,9 +249,27 @@ vtkShaderProgram* GpuLightMaps::ready_program(
   return program;
 }
 
+void GpuLightMaps::set_surfels(
+  const LocalSurfels& local, const Material& material, bool albedo_from_colour)
+{
+  const std::size_t n = local.size();
+  std::vector<float> curvature(n), radius(n);
+  const double lift_limit = 1.0 / local.cell_radius;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    curvature[i] = static_cast<float>(std::clamp(local.curvature[i], -lift_limit, lift_limit));
+    radius[i] = static_cast<float>(local.disc_radius(i));
+  }
+  curvatures_->Upload(curvature, vtkOpenGLBufferObject::ArrayBuffer);
+  disc_radii_->Upload(radius, vtkOpenGLBufferObject::ArrayBuffer);
+  vao_.program = nullptr;  // the attributes are bound anew
+  material_ = material;
+  albedo_from_colour_ = albedo_from_colour;
+}
+
 bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers,
   const LocalSurfels& local, const std::vector<GpuLight>& lights, const LightMapRequest& request,
-  const Material& material, bool albedo_from_colour, LightMapReport& report, std::string& error)
+  LightMapReport& report, std::string& error)
 {
   if (lights.size() > static_cast<std::size_t>(kMaxLights))
   {
@@ -320,14 +340,17 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
     state->PopFramebufferBindings();
     return false;
   }
-  set_eta_uniform(program, material);
+  set_eta_uniform(program, material_);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
   const double reach = 0.5 * local.bounds.extent().norm() + local.max_disc_radius() + 1.0;
+  // The shared buffers' scene units to the local frame's mm.
+  Eigen::Matrix4d to_mm = Eigen::Matrix4d::Identity();
+  to_mm.topLeftCorner<3, 3>() *= local.frame.mm_per_unit;
   for (const LightMapAtlas::Map& map : maps_)
   {
     const MapMatrices m = map_matrices(map.view, reach);
-    const Eigen::Matrix4f model_to_view_f = m.model_to_view.cast<float>();
+    const Eigen::Matrix4f model_to_view_f = (m.model_to_view * to_mm).cast<float>();
     const Eigen::Matrix4f view_to_clip_f = m.view_to_clip.cast<float>();
     const Eigen::Matrix3f normal_to_view = m.rows.cast<float>();
     const Eigen::Matrix3f view_to_local = m.rows.transpose().cast<float>();
@@ -347,7 +370,7 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
       power[c] = static_cast<float>(map.irradiance[c] * map.view.texel_mm() * map.view.texel_mm());
     }
     program->SetUniform3f("irradianceArea", power);
-    program->SetUniformi("albedoFromColour", albedo_from_colour ? 1 : 0);
+    program->SetUniformi("albedoFromColour", albedo_from_colour_ ? 1 : 0);
     const float albedo_as_is[3] = { 1.0f, 0.0f, 1.0f };  // ambient only: colour = colourMC
     program->SetUniform3f("ambientDiffuse", albedo_as_is);
     state->vtkglViewport(map.x, 0, map.width(), map.height());

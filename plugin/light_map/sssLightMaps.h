@@ -12,6 +12,7 @@
 #include "sssGpuHelpers.h"
 
 #include "vtkNew.h"
+#include "vtkOpenGLBufferObject.h"  // vtkNew of the discs' buffers
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"  // the maps' accessors convert smart pointers
 
@@ -19,7 +20,6 @@
 #include <string>
 #include <vector>
 
-class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -79,10 +79,15 @@ struct LightMapReport
 class GpuLightMaps
 {
 public:
+  // At a bake: each disc's curvature and radius as the lights see it (beside the shared
+  // buffers), the material's eta and whether colours are albedo (the paper's maps).
+  void set_surfels(const LocalSurfels& local, const Material& material, bool albedo_from_colour);
+
+  // Draws every light's map of the surfels: `buffers` (scene units, sssSurfelBuffers) with the
+  // discs of set_surfels, in `local`'s frame (mm).
   bool render(vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers,
     const LocalSurfels& local, const std::vector<GpuLight>& lights,
-    const LightMapRequest& request, const Material& material, bool albedo_from_colour,
-    LightMapReport& report, std::string& error);
+    const LightMapRequest& request, LightMapReport& report, std::string& error);
 
   // A piece without surfels still takes part in the other pieces' reductions of the maps of
   // these lights (sssLightMapPieces.h).
@@ -95,8 +100,6 @@ public:
   vtkTextureObject* power() const { return power_; }
   vtkTextureObject* normal() const { return normal_; }
 
-  // The surfels' buffers were uploaded again: their attributes are bound anew.
-  void buffers_changed() { vao_.program = nullptr; }
   void release(vtkWindow* window);
 
 private:
@@ -113,8 +116,8 @@ private:
   // atlas's size, and the pieces' fits.
   void lay_out(const LocalSurfels& local, const std::vector<GpuLight>& lights, const MapFit& fit,
     std::vector<PieceMap>& fits, LightMapReport& report, int& atlas_w, int& atlas_h);
-  // The maps' program for the request's kind of map, its VAO bound to `buffers`; nullptr if
-  // it did not compile.
+  // The maps' program for the request's kind of map, its VAO bound to `buffers` and the
+  // discs; nullptr if it did not compile.
   vtkShaderProgram* ready_program(
     vtkOpenGLRenderWindow* window, const SurfelBuffers& buffers, const LightMapRequest& request);
   // Over pieces: keeps in each texel the surface nearest the light over all of them.
@@ -128,6 +131,11 @@ private:
   vtkSmartPointer<vtkTextureObject> point_, power_, normal_, surfel_, depth_;
   vtkNew<vtkOpenGLFramebufferObject> fbo_;
   ProgramVAO vao_;
+  // Each disc's curvature (1/mm, clamped at one over the cells' radius, as
+  // core/light_map/light_map.cpp does) and radius (mm: the one that closes the surface).
+  vtkNew<vtkOpenGLBufferObject> curvatures_, disc_radii_;
+  Material material_;
+  bool albedo_from_colour_ = false;
 };
 
 }

@@ -1,28 +1,30 @@
-// An actor's surfels as GL vertex buffers for the passes that draw one GL point per surfel
-// (the light maps and the per-surfel resolve), in the actor's local frame (mm).
+// An actor's surfels as GL vertex buffers, uploaded once by its vtkSurfelMapper and shared by
+// the camera view and the views from the lights: positions in scene units relative to the
+// bounds centre (PreparedSurfels::centre, which is also LocalSurfels' frame origin), unit
+// normals and RGBA colours, one per prepared surfel, ghosts included. The views from the
+// lights scale the positions to millimetres in their matrices.
 #ifndef sssSurfelBuffers_h
 #define sssSurfelBuffers_h
 
 #include "vtkNew.h"
+#include "vtkTimeStamp.h"
 
-#include <cstdint>
-#include <vector>
+#include <cstddef>
 
 class vtkOpenGLBufferObject;
 
 namespace sss
 {
 
-struct LocalSurfels;
+struct PreparedSurfels;
 
 struct SurfelBuffers
 {
-  vtkNew<vtkOpenGLBufferObject> points, normals, colours, curvatures, disc_radii;
+  vtkNew<vtkOpenGLBufferObject> positions, normals, colours;
   std::size_t count = 0;
+  vtkTimeStamp upload_time;  // when they were last uploaded; zero when released
 
-  // Each disc's curvature is clamped at one over the disc radius, as core/light_map/light_map.cpp
-  // does; each disc's radius is the one that closes the surface in the light's view.
-  void upload(const LocalSurfels& local, const std::vector<std::uint8_t>& rgba);
+  void upload(const PreparedSurfels& prepared);
   void release();
 };
 

@@ -20,9 +20,10 @@
 namespace sss
 {
 
-void SurfelResolve::allocate(vtkOpenGLRenderWindow* window, std::size_t count)
+void SurfelResolve::allocate(vtkOpenGLRenderWindow* window, std::size_t count, double mm_per_unit)
 {
   count_ = count;
+  mm_per_unit_ = mm_per_unit;
   height_ = std::max(1, static_cast<int>((count + kListWidth - 1) / kListWidth));
   list_ = float_texture_2d(window, kListWidth, height_);
   vao_.program = nullptr;
@@ -69,7 +70,8 @@ bool SurfelResolve::draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* p
   }
   vtkOpenGLState* state = window->GetState();
   PointPassState point_pass(state);
-  vao_.bind(program, points, "pointLocal", texel, "gatheredTexel");
+  vao_.bind(program, points, "positionMC", texel, "gatheredTexel");
+  program->SetUniformf("mmPerUnit", static_cast<float>(mm_per_unit_));
   gathered->Activate();
   program->SetUniformi("gathered", gathered->GetTextureUnit());
   program->SetUniformi("useGrid", grid ? 1 : 0);
@@ -119,7 +121,7 @@ bool SurfelResolve::draw(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* p
 
 void SurfelResolve::set(vtkOpenGLRenderWindow* window, const std::vector<Rgb>& B)
 {
-  allocate(window, B.size());
+  allocate(window, B.size(), mm_per_unit_);
   std::vector<float> texels(4 * static_cast<std::size_t>(kListWidth) * height_, 0.0f);
   for (std::size_t i = 0; i < B.size(); ++i)
   {

@@ -36,10 +36,10 @@ struct GridRadiance
 class SurfelResolve
 {
 public:
-  // A list for `count` surfels, its B not yet set.
-  void allocate(vtkOpenGLRenderWindow* window, std::size_t count);
+  // A list for `count` surfels, its B not yet set; the local frame has `mm_per_unit`.
+  void allocate(vtkOpenGLRenderWindow* window, std::size_t count, double mm_per_unit);
   // B from the surfel pipeline: `radiance` in its list layout, `list_texel` each surfel's texel
-  // there (input order); `points` the surfels' local positions.
+  // there (input order); `points` the surfels' positions (sssSurfelBuffers: scene units).
   bool from_list(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* points,
     vtkOpenGLBufferObject* list_texel, vtkTextureObject* radiance, std::string& error);
   // B interpolated from the paper's virtual points at each surfel's position.
@@ -51,8 +51,6 @@ public:
 
   vtkTextureObject* texture() const { return list_; }
   int width() const { return kListWidth; }
-  // The attributes of `points` are bound anew at the next resolve.
-  void buffers_changed() { vao_.program = nullptr; }
   void release(vtkWindow* window);
 
 private:
@@ -61,6 +59,7 @@ private:
     std::string& error);
 
   std::size_t count_ = 0;
+  double mm_per_unit_ = 1.0;
   int height_ = 1;
   vtkSmartPointer<vtkTextureObject> list_;
   vtkNew<vtkOpenGLBufferObject> no_texel_;  // the texel attribute for the grid: unused
