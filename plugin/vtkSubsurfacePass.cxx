@@ -39,6 +39,13 @@ vtkStandardNewMacro(vtkSubsurfacePass);
 
 struct vtkSubsurfacePass::Internals
 {
+  explicit Internals(vtkSubsurfacePass* self)
+    : Actors([this, self](const std::string& message,
+               bool error) { this->ReportOnce(self, message, error); },
+        [self](const sss::StepReport& report) { self->Record(report); })
+  {
+  }
+
   sss::TranslucentActors Actors;
   vtkNew<vtkOpenGLFramebufferObject> FrameBuffer;
   vtkSmartPointer<vtkTextureObject> Colour, Depth;
@@ -97,7 +104,7 @@ void Apply(vtkSubsurfacePass* pass, const sss::QualitySettings& q)
 }
 
 vtkSubsurfacePass::vtkSubsurfacePass()
-  : Impl(new Internals)
+  : Impl(new Internals(this))
 {
   Apply(this, sss::QualitySettings{});
   vtkNew<vtkRenderStepsPass> steps;
@@ -204,10 +211,9 @@ void vtkSubsurfacePass::GatherLights(vtkRenderer* ren)
 void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
 {
   Internals& impl = *this->Impl;
-  impl.Actors.update(s, window, impl.Lights, SettingsOf(this), this->MeasureStepTimes,
-    impl.Pieces,
-    [this](const std::string& message, bool error) { this->Impl->ReportOnce(this, message, error); },
-    [this](const sss::StepReport& report) { this->Record(report); });
+  const sss::StepContext context{ window, SettingsOf(this), this->MeasureStepTimes,
+    impl.Pieces };
+  impl.Actors.update(s, context, impl.Lights);
   this->LastTranslucentActors = static_cast<int>(impl.Actors.ready().size());
 }
 

@@ -86,13 +86,13 @@ void NearFarStrategy::release(vtkWindow* window)
   gpu_->release(window);
 }
 
-bool NearFarStrategy::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
-  const Material& material, const Dipole& dipole, const QualitySettings& settings,
-  StepReport& report, std::string& error)
+bool NearFarStrategy::bake(const StepContext& context, const LocalSurfels& local,
+  const Material& material, const Dipole& dipole, StepReport& report, std::string& error)
 {
+  vtkOpenGLRenderWindow* const window = context.window;
   Gpu& g = *gpu_;
   g.material = material;
-  g.settings = settings;
+  g.settings = context.settings;
   g.cell_radius = local.cell_radius;
   g.support = dipole.max_support_radius(kKernelSupportFraction);
   g.split = NearFarSplit::choose(
@@ -123,10 +123,12 @@ bool NearFarStrategy::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& lo
   return true;
 }
 
-bool NearFarStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& light_maps,
-  const Dipole& dipole, bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points,
+bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& light_maps,
+  const Dipole& dipole, SurfelResolve& resolve, vtkOpenGLBufferObject* positions,
   StepReport& report, std::string& error)
 {
+  vtkOpenGLRenderWindow* const window = context.window;
+  const bool finish = context.finish;
   const LightMapAtlas maps = light_maps.atlas();
   Gpu& g = *gpu_;
   Stopwatch clock;
@@ -186,7 +188,7 @@ bool NearFarStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& l
   state->PopFramebufferBindings();
   finish_if(finish);
   report.seconds_far = clock.lap();
-  const bool handed = resolve.from_list(window, points, g.list.texel_buffer(), g.B, error);
+  const bool handed = resolve.from_list(window, positions, g.list.texel_buffer(), g.B, error);
   finish_if(finish);
   report.seconds_hand_over = clock.lap();
   return handed;

@@ -43,15 +43,14 @@ public:
   ~NearFarStrategy() override;
 
   // The CPU bake (cells, the near-field table, the surfel list) and its uploads.
-  bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
-    const Dipole& dipole, const QualitySettings& settings, StepReport& report,
-    std::string& error) override;
+  bool bake(const StepContext& context, const LocalSurfels& local, const Material& material,
+    const Dipole& dipole, StepReport& report, std::string& error) override;
   // Maps of the surfel each texel sees, texels TexelPerRadius of a disc radius.
   LightMapRequest light_map_request(const QualitySettings& settings) const override;
   // Irradiance, source pyramids and B at every surfel for the given light maps, handed to
-  // the view; with `finish` the report's seconds of each of these steps are exact.
-  bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
-    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+  // the view; with the context's `finish` the report's seconds of each of these steps are exact.
+  bool light(const StepContext& context, const GpuLightMaps& maps, const Dipole& dipole,
+    SurfelResolve& resolve, vtkOpenGLBufferObject* positions, StepReport& report,
     std::string& error) override;
   void release(vtkWindow* window) override;
 

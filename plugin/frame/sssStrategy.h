@@ -13,6 +13,7 @@
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
+class vtkSubsurfacePieces;
 class vtkWindow;
 
 namespace sss
@@ -21,6 +22,17 @@ namespace sss
 class Dipole;
 class SurfelResolve;
 struct LocalSurfels;
+
+// How a frame runs the steps of its translucent actors: the window (its context current), the
+// pass's settings, whether to wait for the GPU after each step (so that the reported times are
+// real) and the cloud's other pieces, or none.
+struct StepContext
+{
+  vtkOpenGLRenderWindow* window = nullptr;
+  QualitySettings settings;
+  bool finish = false;
+  vtkSubsurfacePieces* pieces = nullptr;
+};
 
 // What the steps of one update did and measured.
 struct StepReport
@@ -44,14 +56,14 @@ class Strategy
 public:
   virtual ~Strategy() = default;
   // `local` carries its surface fit and its albedo (none for white).
-  virtual bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
-    const Material& material, const Dipole& dipole, const QualitySettings& settings,
-    StepReport& report, std::string& error) = 0;
+  virtual bool bake(const StepContext& context, const LocalSurfels& local,
+    const Material& material, const Dipole& dipole, StepReport& report, std::string& error) = 0;
   // What the light maps must hold for it (after its bake).
   virtual LightMapRequest light_map_request(const QualitySettings& settings) const = 0;
-  // B for the maps just drawn, handed to `resolve` at the surfels' local `points`.
-  virtual bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
-    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+  // B for the maps just drawn, handed to `resolve` at the surfels' `positions`
+  // (sssSurfelBuffers).
+  virtual bool light(const StepContext& context, const GpuLightMaps& maps, const Dipole& dipole,
+    SurfelResolve& resolve, vtkOpenGLBufferObject* positions, StepReport& report,
     std::string& error) = 0;
   virtual void release(vtkWindow* window) = 0;
 };

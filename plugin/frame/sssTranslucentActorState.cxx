@@ -70,12 +70,14 @@ int TranslucentActorState::list_width() const
   return gpu_->resolve.width();
 }
 
-void TranslucentActorState::take_part_without_surfels(vtkSubsurfacePieces* pieces,
-  const std::vector<GpuLight>& lights, const QualitySettings& settings)
+void TranslucentActorState::take_part_without_surfels(
+  const StepContext& context, const std::vector<GpuLight>& lights)
 {
-  if (agree_over_pieces(pieces, false) && settings.strategy != KernelStrategy::Paper)
+  if (agree_over_pieces(context.pieces, false) &&
+    context.settings.strategy != KernelStrategy::Paper)
   {
-    GpuLightMaps::take_part_without_surfels(pieces, lights, settings.max_map_size);
+    GpuLightMaps::take_part_without_surfels(
+      context.pieces, lights, context.settings.max_map_size);
   }
 }
 
@@ -86,23 +88,23 @@ void TranslucentActorState::release(vtkWindow* window)
   geometry_time_ = 0;
 }
 
-bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-  const SurfelBuffers& buffers, const Material& material, bool albedo_from_colour,
-  const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-  vtkSubsurfacePieces* pieces, StepReport& report, std::string& error)
+bool TranslucentActorState::update(
+  const StepContext& context, const ActorInputs& actor, StepReport& report, std::string& error)
 {
+  const Material& material = actor.material;
   std::vector<double> key;
   for (int c = 0; c < 3; ++c)
   {
     key.insert(key.end(), { material.sigma_a[c], material.sigma_s_prime[c], material.eta[c] });
   }
   key.push_back(material.mm_per_unit);
-  const vtkMTimeType surfels_time = buffers.upload_time.GetMTime();
+  const vtkMTimeType surfels_time = actor.buffers.upload_time.GetMTime();
   const bool geometry_changed = !valid_ || surfels_time != geometry_time_ ||
-    key != material_key_ || !(settings == geometry_settings_) ||
-    albedo_from_colour != geometry_albedo_;
-  const bool light_changed = agree_over_pieces(pieces, geometry_changed || !(lights == lights_));
-  report.surfel_count = surfels.cloud.size();
+    key != material_key_ || !(context.settings == geometry_settings_) ||
+    actor.albedo_from_colour != geometry_albedo_;
+  const bool light_changed =
+    agree_over_pieces(context.pieces, geometry_changed || !(actor.lights == lights_));
+  report.surfel_count = actor.surfels.cloud.size();
   if (!light_changed)
   {
     return true;
@@ -113,26 +115,26 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   Stopwatch clock;
   if (geometry_changed)
   {
-    if (!bake(window, surfels, buffers, albedo_from_colour, settings, report, error))
+    if (!bake(context, actor, report, error))
     {
       return false;
     }
     material_key_ = key;
     geometry_time_ = surfels_time;
-    geometry_settings_ = settings;
-    geometry_albedo_ = albedo_from_colour;
+    geometry_settings_ = context.settings;
+    geometry_albedo_ = actor.albedo_from_colour;
     report.bake = true;
     report.seconds_bake = clock.lap();
   }
 
   LightMapReport maps;
-  LightMapRequest request = g.strategy->light_map_request(settings);
-  request.pieces = pieces;
-  if (!g.maps.render(window, buffers, g.local, lights, request, maps, error))
+  LightMapRequest request = g.strategy->light_map_request(context.settings);
+  request.pieces = context.pieces;
+  if (!g.maps.render(context.window, actor.buffers, g.local, actor.lights, request, maps, error))
   {
     return false;
   }
-  finish_if(finish);
+  finish_if(context.finish);
   report.illumination = true;
   report.seconds_illumination = clock.lap();
   report.map_width = maps.map_width;
@@ -140,57 +142,57 @@ bool TranslucentActorState::update(vtkOpenGLRenderWindow* window, const Prepared
   report.texel_mm = maps.texel_mm;
   report.notes = maps.notes;
   if (!g.strategy->light(
-        window, g.maps, *g.dipole, finish, g.resolve, buffers.positions, report, error))
+        context, g.maps, *g.dipole, g.resolve, actor.buffers.positions, report, error))
   {
     return false;
   }
-  finish_if(finish);
+  finish_if(context.finish);
   report.surfels = true;
   report.seconds_surfels = clock.lap();
-  lights_ = lights;
+  lights_ = actor.lights;
   valid_ = true;
   return true;
 }
 
-bool TranslucentActorState::bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-  const SurfelBuffers& buffers, bool albedo_from_colour, const QualitySettings& settings,
-  StepReport& report, std::string& error)
+bool TranslucentActorState::bake(
+  const StepContext& context, const ActorInputs& actor, StepReport& report, std::string& error)
 {
   Gpu& g = *gpu_;
-  g.local = LocalSurfels::from(surfels.cloud, material_.mm_per_unit);
+  g.local = LocalSurfels::from(actor.surfels.cloud, material_.mm_per_unit);
   g.dipole = std::make_unique<Dipole>(material_);
   const std::size_t n = g.local.size();
-  if (buffers.count != n)
+  if (actor.buffers.count != n)
   {
-    error = "the surfels' vertex buffers hold " + std::to_string(buffers.count) + " of " +
+    error = "the surfels' vertex buffers hold " + std::to_string(actor.buffers.count) + " of " +
       std::to_string(n) + " surfels";
     return false;
   }
-  g.resolve.allocate(window, n, material_.mm_per_unit);
-  g.maps.set_surfels(g.local, material_, albedo_from_colour);
+  g.resolve.allocate(context.window, n, material_.mm_per_unit);
+  g.maps.set_surfels(g.local, material_, actor.albedo_from_colour);
+  const QualitySettings& settings = context.settings;
   if (!g.strategy || g.strategy_kind != settings.strategy)
   {
     if (g.strategy)
     {
-      g.strategy->release(window);
+      g.strategy->release(context.window);
     }
     g.strategy = make_strategy(settings.strategy);
     g.strategy_kind = settings.strategy;
   }
   // Colours as albedo, as the light maps' fragments take them.
   g.local.albedo.clear();
-  if (albedo_from_colour)
+  if (actor.albedo_from_colour)
   {
     g.local.albedo.resize(n);
     for (std::size_t i = 0; i < n; ++i)
     {
       for (int c = 0; c < 3; ++c)
       {
-        g.local.albedo[i][c] = surfels.rgba[4 * i + c] / 255.0;
+        g.local.albedo[i][c] = actor.surfels.rgba[4 * i + c] / 255.0;
       }
     }
   }
-  return g.strategy->bake(window, g.local, material_, *g.dipole, settings, report, error);
+  return g.strategy->bake(context, g.local, material_, *g.dipole, report, error);
 }
 
 bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,

@@ -34,6 +34,18 @@ class vtkWindow;
 namespace sss
 {
 
+// One actor's inputs to its steps: its prepared surfels and the vertex buffers its mapper
+// uploaded (a new upload is a new geometry), its material in its own units, whether its colours
+// are albedo, and the lights in its model frame.
+struct ActorInputs
+{
+  const PreparedSurfels& surfels;
+  const SurfelBuffers& buffers;
+  Material material;
+  bool albedo_from_colour = false;
+  std::vector<GpuLight> lights;
+};
+
 class TranslucentActorState
 {
 public:
@@ -42,20 +54,17 @@ public:
   TranslucentActorState(const TranslucentActorState&) = delete;  // owns GPU resources
   TranslucentActorState& operator=(const TranslucentActorState&) = delete;
 
-  // Runs steps 1-2 where their inputs changed. `finish` waits for the GPU after each step so
-  // that the reported times are real. Returns false with `error` set when it cannot run.
-  // With `pieces` (a cloud split over processes), step 1 runs on every piece when it must on
-  // any, and its maps are combined over them (sssLightMapPieces.h): collective. `buffers` are
-  // the surfels' vertex buffers that the mapper uploaded (a new upload is a new geometry).
-  bool update(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-    const SurfelBuffers& buffers, const Material& material, bool albedo_from_colour,
-    const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-    vtkSubsurfacePieces* pieces, StepReport& report, std::string& error);
+  // Runs steps 1-2 where their inputs changed. Returns false with `error` set when it cannot
+  // run. With the context's pieces (a cloud split over processes), step 1 runs on every piece
+  // when it must on any, and its maps are combined over them (sssLightMapPieces.h): collective.
+  bool update(const StepContext& context, const ActorInputs& actor, StepReport& report,
+    std::string& error);
 
   // What update does on the other pieces, for a piece whose actor has no surfels: takes part
-  // in the decision and, when step 1 runs, in the combination of the maps. Collective.
-  static void take_part_without_surfels(vtkSubsurfacePieces* pieces,
-    const std::vector<GpuLight>& lights, const QualitySettings& settings);
+  // in the decision and, when step 1 runs, in the combination of the maps of `lights` (model
+  // frame). Collective.
+  static void take_part_without_surfels(
+    const StepContext& context, const std::vector<GpuLight>& lights);
 
   // The per-surfel B texture (RGBA32F, surfel i at texel (i % width, i / width)).
   vtkTextureObject* surfel_radiance() const;
@@ -74,9 +83,8 @@ public:
 private:
   struct Gpu;
   // The bake: what changes with the geometry, the material or a setting.
-  bool bake(vtkOpenGLRenderWindow* window, const PreparedSurfels& surfels,
-    const SurfelBuffers& buffers, bool albedo_from_colour, const QualitySettings& settings,
-    StepReport& report, std::string& error);
+  bool bake(const StepContext& context, const ActorInputs& actor, StepReport& report,
+    std::string& error);
 
   std::unique_ptr<Gpu> gpu_;
   Material material_;

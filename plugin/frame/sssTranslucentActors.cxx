@@ -13,9 +13,14 @@
 namespace sss
 {
 
-void TranslucentActors::update(const vtkRenderState* s, vtkOpenGLRenderWindow* window,
-  const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-  vtkSubsurfacePieces* pieces, const Say& say, const Record& record)
+TranslucentActors::TranslucentActors(Say say, Record record)
+  : say_(std::move(say))
+  , record_(std::move(record))
+{
+}
+
+void TranslucentActors::update(
+  const vtkRenderState* s, const StepContext& context, const std::vector<GpuLight>& lights)
 {
   ready_.clear();
   std::set<vtkActor*> seen;
@@ -26,7 +31,7 @@ void TranslucentActors::update(const vtkRenderState* s, vtkOpenGLRenderWindow* w
     {
       continue;
     }
-    if (this->update_actor(actor, window, lights, settings, finish, pieces, say, record, seen))
+    if (this->update_actor(actor, context, lights, seen))
     {
       ready_.insert(actor);
     }
@@ -35,7 +40,7 @@ void TranslucentActors::update(const vtkRenderState* s, vtkOpenGLRenderWindow* w
   {
     if (seen.count(it->first) == 0)
     {
-      it->second->release(window);
+      it->second->release(context.window);
       it = states_.erase(it);
     }
     else
@@ -45,38 +50,37 @@ void TranslucentActors::update(const vtkRenderState* s, vtkOpenGLRenderWindow* w
   }
 }
 
-bool TranslucentActors::update_actor(vtkActor* actor, vtkOpenGLRenderWindow* window,
-  const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-  vtkSubsurfacePieces* pieces, const Say& say, const Record& record, std::set<vtkActor*>& seen)
+bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context,
+  const std::vector<GpuLight>& lights, std::set<vtkActor*>& seen)
 {
   vtkTranslucentMaterial* material = vtkTranslucentMaterial::GetFrom(actor);
   auto* mapper = vtkSurfelMapper::SafeDownCast(actor->GetMapper());
   if (!mapper)
   {
-    say("an actor carries a translucent material but its mapper is not a vtkSurfelMapper; it "
-        "draws as before",
+    say_("an actor carries a translucent material but its mapper is not a vtkSurfelMapper; it "
+         "draws as before",
       false);
     return false;
   }
   const std::string invalid = material->Validate();
   if (!invalid.empty())
   {
-    say("translucent material: " + invalid, true);
+    say_("translucent material: " + invalid, true);
     return false;
   }
-  const SurfelBuffers& buffers = mapper->UpdateBuffers(actor);
   const PreparedSurfels& surfels = mapper->UpdateSurfels(actor);
+  const SurfelBuffers& buffers = mapper->UpdateBuffers(actor);
   const std::vector<GpuLight> local = lights_in_model_frame(lights, actor->GetMatrix());
   if (!surfels.error.empty())
   {
     // The mapper reports it and draws nothing; the other pieces' step 1 still needs this one.
-    TranslucentActorState::take_part_without_surfels(pieces, local, settings);
+    TranslucentActorState::take_part_without_surfels(context, local);
     return false;
   }
   if (lights.empty())
   {
-    say("the renderer has no switched-on light: translucent actors receive no light and are "
-        "black",
+    say_("the renderer has no switched-on light: translucent actors receive no light and are "
+         "black",
       false);
   }
   seen.insert(actor);
@@ -94,28 +98,28 @@ bool TranslucentActors::update_actor(vtkActor* actor, vtkOpenGLRenderWindow* win
     std::vector<Rgb> B;
     if (!radiance_in_surfel_order(surfels, precomputed->second, B))
     {
-      say("precomputed radiance needs 3 components per input point", true);
+      say_("precomputed radiance needs 3 components per input point", true);
       return false;
     }
-    if (!state->show_radiance(window, surfels, core, B, error))
+    if (!state->show_radiance(context.window, surfels, core, B, error))
     {
-      say("precomputed radiance: " + error, true);
+      say_("precomputed radiance: " + error, true);
       return false;
     }
     return true;
   }
   StepReport report;
-  if (!state->update(window, surfels, buffers, core,
-        material->GetColoursAsAlbedo(), local, settings, finish, pieces, report, error))
+  const ActorInputs inputs{ surfels, buffers, core, material->GetColoursAsAlbedo(), local };
+  if (!state->update(context, inputs, report, error))
   {
-    say("subsurface scattering is off for an actor: " + error, true);
+    say_("subsurface scattering is off for an actor: " + error, true);
     return false;
   }
   for (const std::string& note : report.notes)
   {
-    say(note, false);
+    say_(note, false);
   }
-  record(report);
+  record_(report);
   return true;
 }
 

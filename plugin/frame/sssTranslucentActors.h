@@ -36,11 +36,14 @@ public:
   // The report of an actor whose steps ran.
   using Record = std::function<void(const StepReport& report)>;
 
+  // Warnings and errors go to `say`, the reports of the actors whose steps ran to `record`.
+  TranslucentActors(Say say, Record record);
+
   // Steps 1-2 of every translucent actor among the state's props, where their inputs changed,
-  // with the world-frame `lights`. Collective with `pieces` (TranslucentActorState::update).
-  void update(const vtkRenderState* s, vtkOpenGLRenderWindow* window,
-    const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-    vtkSubsurfacePieces* pieces, const Say& say, const Record& record);
+  // with the world-frame `lights`. Collective with the context's pieces
+  // (TranslucentActorState::update).
+  void update(
+    const vtkRenderState* s, const StepContext& context, const std::vector<GpuLight>& lights);
 
   // The actors whose B is valid this frame; none after clear_ready.
   const std::set<vtkActor*>& ready() const { return ready_; }
@@ -58,11 +61,11 @@ public:
 private:
   // Brings one actor up to date; false when it is not ready. Adds it to `seen` once it has
   // surfels and a valid material (the states of the others are released).
-  bool update_actor(vtkActor* actor, vtkOpenGLRenderWindow* window,
-    const std::vector<GpuLight>& lights, const QualitySettings& settings, bool finish,
-    vtkSubsurfacePieces* pieces, const Say& say, const Record& record,
-    std::set<vtkActor*>& seen);
+  bool update_actor(vtkActor* actor, const StepContext& context,
+    const std::vector<GpuLight>& lights, std::set<vtkActor*>& seen);
 
+  Say say_;
+  Record record_;
   std::map<vtkActor*, std::unique_ptr<TranslucentActorState>> states_;
   std::set<vtkActor*> ready_;
   std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> precomputed_;

@@ -111,10 +111,11 @@ LightMapRequest PaperStrategy::light_map_request(const QualitySettings&) const
   return request;
 }
 
-bool PaperStrategy::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local,
-  const Material&, const Dipole& dipole, const QualitySettings& settings, StepReport& report,
-  std::string& error)
+bool PaperStrategy::bake(const StepContext& context, const LocalSurfels& local,
+  const Material&, const Dipole& dipole, StepReport& report, std::string& error)
 {
+  vtkOpenGLRenderWindow* const window = context.window;
+  const QualitySettings& settings = context.settings;
   const int level = settings.grid_level;
   grid_.reset();
   radiance_ = nullptr;
@@ -182,10 +183,11 @@ bool PaperStrategy::bake(vtkOpenGLRenderWindow* window, const LocalSurfels& loca
   return true;
 }
 
-bool PaperStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps,
-  const Dipole& dipole, bool, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport&,
+bool PaperStrategy::light(const StepContext& context, const GpuLightMaps& maps,
+  const Dipole& dipole, SurfelResolve& resolve, vtkOpenGLBufferObject* positions, StepReport&,
   std::string& error)
 {
+  vtkOpenGLRenderWindow* const window = context.window;
   const VirtualGrid& grid = *grid_;
   ReceiverList& receivers = *receivers_;
   static const std::string fs = shader_with_pieces(sss_paper_taps_fs,
@@ -290,7 +292,7 @@ bool PaperStrategy::light(vtkOpenGLRenderWindow* window, const GpuLightMaps& map
   on_grid.grid = grid_.get();
   on_grid.radiance = radiance_;
   on_grid.gathered = receivers.B;  // B per virtual point, in their list's layout
-  return resolve.from_grid(window, points, on_grid, error);
+  return resolve.from_grid(window, positions, on_grid, error);
 }
 
 }

@@ -38,14 +38,13 @@ public:
   ~PaperStrategy() override;
 
   // The grid for these surfels: 2^GridLevel points per axis, 0 for the paper's 64.
-  bool bake(vtkOpenGLRenderWindow* window, const LocalSurfels& local, const Material& material,
-    const Dipole& dipole, const QualitySettings& settings, StepReport& report,
-    std::string& error) override;
+  bool bake(const StepContext& context, const LocalSurfels& local, const Material& material,
+    const Dipole& dipole, StepReport& report, std::string& error) override;
   // The paper's maps: 512 texels a side, eq. 15 per texel.
   LightMapRequest light_map_request(const QualitySettings& settings) const override;
   // B at every virtual point from the maps, into the 3-D texture, then at each surfel.
-  bool light(vtkOpenGLRenderWindow* window, const GpuLightMaps& maps, const Dipole& dipole,
-    bool finish, SurfelResolve& resolve, vtkOpenGLBufferObject* points, StepReport& report,
+  bool light(const StepContext& context, const GpuLightMaps& maps, const Dipole& dipole,
+    SurfelResolve& resolve, vtkOpenGLBufferObject* positions, StepReport& report,
     std::string& error) override;
   void release(vtkWindow* window) override;
 
