@@ -1,7 +1,6 @@
 #include "sssLightMaps.h"
 
 #include "sssMaterialUniforms.h"
-#include "sssPaperTaps.h"
 #include "sssSurfelBuffers.h"
 #include "sss_illumination_fs.h"
 #include "sss_light_map_surfel_fs.h"
@@ -277,10 +276,10 @@ bool GpuLightMaps::render(vtkOpenGLRenderWindow* window, const SurfelBuffers& bu
     return false;
   }
   const bool paper = request.paper;
-  // The paper's map is 512 texels a side; the surfel pipeline's texels are TexelPerRadius of
-  // a disc radius, at most MaxMapSize a side.
+  // The paper's map is as fine as its size allows; the surfel pipeline's texels are
+  // TexelPerRadius of a disc radius. Either at most the request's size a side.
   const double texel = paper ? 1e-9 : request.texel_per_radius * local.cell_radius;
-  const int max_size = paper ? kPaperMapSize : request.max_map_size;
+  const int max_size = request.max_map_size;
   vtkSubsurfacePieces* pieces =
     !paper && request.pieces && request.pieces->GetNumberOfPieces() > 1 ? request.pieces : nullptr;
   std::vector<PieceMap> fits;

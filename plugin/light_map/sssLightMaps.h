@@ -62,9 +62,9 @@ struct LightMapAtlas
 // What the maps hold and how fine they are.
 struct LightMapRequest
 {
-  bool paper = false;            // the paper's maps: 512 texels a side, eq. 15 per texel
-  double texel_per_radius = 0;   // otherwise: texel over the disc radius ...
-  int max_map_size = 0;          // ... at most this many texels a side
+  bool paper = false;            // the paper's maps: eq. 15 per texel, as fine as they may be
+  double texel_per_radius = 0;   // otherwise: texel over the disc radius
+  int max_map_size = 0;          // at most this many texels a side (the paper's: 512)
   vtkOpenGLBufferObject* list_texel = nullptr;  // each surfel's list texel (not the paper)
   vtkSubsurfacePieces* pieces = nullptr;  // the cloud's other pieces (not the paper), or none
 };

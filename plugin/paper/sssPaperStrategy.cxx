@@ -108,6 +108,7 @@ LightMapRequest PaperStrategy::light_map_request(const QualitySettings&) const
 {
   LightMapRequest request;
   request.paper = true;
+  request.max_map_size = kPaperMapSize;
   return request;
 }
 
