@@ -54,14 +54,14 @@ void SurfelIndex::nearest(const Eigen::Vector3d& x, int k, std::vector<std::size
   out = std::move(ids[0]);
 }
 
-double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const SurfelIndex& index) {
+double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const NearestPoints& nearest) {
   double sum = 0.0;
   long count = 0;
   const long n = static_cast<long>(positions.size());
 #pragma omp parallel for reduction(+ : sum, count) schedule(static)
   for (long i = 0; i < n; ++i) {
     std::vector<std::size_t> near;
-    index.nearest(positions[i], 8, near);  // several, so that duplicates do not hide it
+    nearest(static_cast<std::size_t>(i), 8, near);  // several, so that duplicates do not hide it
     for (std::size_t j : near) {
       const double d = (positions[j] - positions[i]).norm();
       if (d > 0.0) {
@@ -72,6 +72,12 @@ double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const SurfelI
     }
   }
   return count > 0 ? sum / static_cast<double>(count) : 0.0;
+}
+
+double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const SurfelIndex& index) {
+  return mean_spacing(positions, [&](std::size_t i, int k, std::vector<std::size_t>& out) {
+    index.nearest(positions[i], k, out);
+  });
 }
 
 }  // namespace sss

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -27,8 +28,14 @@ class SurfelIndex {
   std::size_t count_ = 0;
 };
 
+// Point i's k nearest points (itself among them), nearest first; called from several threads.
+using NearestPoints = std::function<void(std::size_t i, int k, std::vector<std::size_t>& out)>;
+
 // Mean distance from a point to its nearest other point (duplicates skipped; 0 when every
-// point sits at one place), `index` built over `positions`.
+// point sits at one place), with the neighbours of any index over `positions` (the PCL glue
+// passes PCL's kd-tree).
+double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const NearestPoints& nearest);
+// The same with `index` built over `positions`.
 double mean_spacing(const std::vector<Eigen::Vector3d>& positions, const SurfelIndex& index);
 
 }  // namespace sss

@@ -16,33 +16,12 @@
 
 #include "denoised_surface.h"
 #include "isolated_points.h"
+#include "surfel_index.h"
 
 namespace sss {
 namespace {
 
 using XyzCloud = pcl::PointCloud<pcl::PointXYZ>;
-
-// Mean distance from each point to its nearest other point (duplicates skipped), 0 when every
-// point sits at one place. Cost: one k-nearest query per point on PCL's kd-tree.
-double mean_spacing(const XyzCloud::ConstPtr& xyz, const pcl::search::KdTree<pcl::PointXYZ>& tree) {
-  constexpr int kNeighbours = 8;
-  double sum = 0.0;
-  long counted = 0;
-  const long n = static_cast<long>(xyz->size());
-#pragma omp parallel for reduction(+ : sum, counted) schedule(static)
-  for (long i = 0; i < n; ++i) {
-    pcl::Indices indices;
-    std::vector<float> squared;
-    tree.nearestKSearch((*xyz)[i], kNeighbours, indices, squared);
-    for (float d2 : squared)
-      if (d2 > 0.0f) {
-        sum += std::sqrt(static_cast<double>(d2));
-        ++counted;
-        break;
-      }
-  }
-  return counted > 0 ? sum / static_cast<double>(counted) : 0.0;
-}
 
 // Normals by NormalEstimationOMP over a radius; points with fewer than three neighbours in it
 // get theirs from their k nearest. Unusable normals stay NaN.
@@ -133,7 +112,13 @@ Surfels build(const pcl::PointCloud<PointT>& cloud, bool normals_given, bool col
 
   pcl::search::KdTree<pcl::PointXYZ>::Ptr tree(new pcl::search::KdTree<pcl::PointXYZ>);
   tree->setInputCloud(xyz);
-  s.spacing = mean_spacing(xyz, *tree);
+  s.spacing = mean_spacing(surface.positions,
+                           [&](std::size_t i, int k, std::vector<std::size_t>& out) {
+                             pcl::Indices indices;
+                             std::vector<float> squared;
+                             tree->nearestKSearch((*xyz)[i], k, indices, squared);
+                             out.assign(indices.begin(), indices.end());
+                           });
   if (!(s.spacing > 0.0))
     throw InputError("all " + std::to_string(xyz->size()) +
                      " finite points lie at one place; there is no surface");
