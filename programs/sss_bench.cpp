@@ -164,17 +164,21 @@ Setting setting_of(const std::string& text) {
   }
   if (f.size() > 4) throw std::invalid_argument("--settings: '" + text + "' has more than 4 parts");
   if (f.size() > 1 && !f[1].empty()) {
-    s.max_map = static_cast<int>(sss::cli::count("--settings map", f[1], 16384));
-    if (s.max_map < 16) throw std::invalid_argument("--settings map: needs 16 to 16384 texels");
+    const int hi = pass->GetMaxMapSizeMaxValue();
+    const double map = static_cast<double>(sss::cli::count("--settings map", f[1], hi));
+    s.max_map = static_cast<int>(
+        sss::cli::within("--settings map", map, pass->GetMaxMapSizeMinValue(), hi));
   }
   if (f.size() > 2 && !f[2].empty()) {
-    s.opening_angle = number("--settings angle", f[2]);
-    if (s.opening_angle < 0.05 || s.opening_angle > 2)
-      throw std::invalid_argument("--settings angle: needs 0.05 to 2");
+    s.opening_angle = sss::cli::within("--settings angle", number("--settings angle", f[2]),
+                                       pass->GetOpeningAngleMinValue(),
+                                       pass->GetOpeningAngleMaxValue());
   }
   if (f.size() > 3 && !f[3].empty()) {
-    s.cell_samples = static_cast<int>(sss::cli::count("--settings samples", f[3], 256));
-    if (s.cell_samples < 1) throw std::invalid_argument("--settings samples: needs 1 to 256");
+    const int hi = pass->GetCellSamplesMaxValue();
+    const double samples = static_cast<double>(sss::cli::count("--settings samples", f[3], hi));
+    s.cell_samples = static_cast<int>(
+        sss::cli::within("--settings samples", samples, pass->GetCellSamplesMinValue(), hi));
   }
   apply(s, pass);
   s.is_paper = s.strategy == "paper";

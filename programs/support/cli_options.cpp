@@ -34,6 +34,15 @@ std::size_t count(const std::string& flag, const std::string& text, double hi) {
   return static_cast<std::size_t>(v);
 }
 
+double within(const std::string& flag, double value, double lo, double hi) {
+  if (value < lo || value > hi) {
+    std::ostringstream msg;
+    msg << flag << ": needs a value from " << lo << " to " << hi;
+    throw std::invalid_argument(msg.str());
+  }
+  return value;
+}
+
 std::size_t memory_cap(const std::string& flag, const std::string& text) {
   const std::size_t mib = count(flag, text, 1e9);
   if (mib == 0) throw std::invalid_argument(flag + ": needs at least 1 MiB");
@@ -207,6 +216,7 @@ std::string apply_splat_radii(const Options& o, SurfelCloud& cloud) {
 
 Options parse(int argc, char** argv) {
   Options o;
+  vtkNew<vtkSubsurfacePass> limits;  // the settings' ranges
   for (Arguments args(argc, argv); args.next();) {
     const std::string& flag = args.flag();
     const auto value = [&args] { return args.value(); };
@@ -277,8 +287,7 @@ Options parse(int argc, char** argv) {
       }
     } else if (flag == "--strategy") {
       o.strategy = value();
-      vtkNew<vtkSubsurfacePass> probe;
-      if (!probe->SetKernelStrategyByName(*o.strategy))
+      if (!limits->SetKernelStrategyByName(*o.strategy))
         throw std::invalid_argument("--strategy: '" + *o.strategy + "' is not near-far or paper");
     } else if (flag == "--bake") {
       o.bake_ply = value();
@@ -293,17 +302,17 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--grid-level") {
       o.grid_level = whole(flag, value(), 0, 10);
     } else if (flag == "--max-map") {
-      o.max_map_size = whole(flag, value(), 16, 16384);
+      o.max_map_size =
+          whole(flag, value(), limits->GetMaxMapSizeMinValue(), limits->GetMaxMapSizeMaxValue());
     } else if (flag == "--cell-samples") {
-      o.cell_samples = whole(flag, value(), 1, 256);
+      o.cell_samples =
+          whole(flag, value(), limits->GetCellSamplesMinValue(), limits->GetCellSamplesMaxValue());
     } else if (flag == "--texel-per-radius") {
-      o.texel_per_radius = number(flag, value());
-      if (*o.texel_per_radius < 0.01 || *o.texel_per_radius > 16)
-        throw std::invalid_argument("--texel-per-radius: needs a value from 0.01 to 16");
+      o.texel_per_radius = within(flag, number(flag, value()), limits->GetTexelPerRadiusMinValue(),
+                                  limits->GetTexelPerRadiusMaxValue());
     } else if (flag == "--opening-angle") {
-      o.opening_angle = number(flag, value());
-      if (*o.opening_angle < 0.05 || *o.opening_angle > 2.0)
-        throw std::invalid_argument("--opening-angle: needs a value from 0.05 to 2");
+      o.opening_angle = within(flag, number(flag, value()), limits->GetOpeningAngleMinValue(),
+                               limits->GetOpeningAngleMaxValue());
     } else if (flag == "--radius-scale") {
       o.radius_scale = number(flag, value());
       if (o.radius_scale <= 0 || o.radius_scale > 10)

@@ -104,6 +104,9 @@ class Arguments {
 double number(const std::string& flag, const std::string& text);
 // A whole number from 0 to hi; throws std::invalid_argument naming the flag otherwise.
 std::size_t count(const std::string& flag, const std::string& text, double hi);
+// `value` when it lies in [lo, hi] (a setting's range as vtkSubsurfacePass clamps it: pass
+// Get...MinValue() and Get...MaxValue()); throws std::invalid_argument naming the flag otherwise.
+double within(const std::string& flag, double value, double lo, double hi);
 // --fit's value: true for all, false for surface.
 bool fit_all(const std::string& flag, const std::string& text);
 // on: true, off: false (--denoise).
