@@ -47,7 +47,9 @@ struct vtkSubsurfacePass::Internals
   }
 
   sss::TranslucentActors Actors;
-  vtkNew<vtkOpenGLFramebufferObject> FrameBuffer;
+  // Made anew with its textures: a framebuffer object keeps the size of its first attachments
+  // (GetLastSize, which the delegate's camera takes as the viewport) after they are replaced.
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
   vtkSmartPointer<vtkTextureObject> Colour, Depth;
   std::unique_ptr<vtkOpenGLQuadHelper> Composite;
   vtkNew<vtkFloatArray> Linear;
@@ -274,7 +276,9 @@ void vtkSubsurfacePass::RenderScene(
     {
       impl.Colour->ReleaseGraphicsResources(window);
       impl.Depth->ReleaseGraphicsResources(window);
+      impl.FrameBuffer->ReleaseGraphicsResources(window);
     }
+    impl.FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     impl.Colour = sss::float_texture_2d(window, width, height);
     impl.Depth = vtkSmartPointer<vtkTextureObject>::New();
     impl.Depth->SetContext(window);
@@ -445,7 +449,7 @@ bool vtkSubsurfacePass::GetSurfelRadiance(vtkActor* actor, vtkFloatArray* B)
 {
   sss::TranslucentActorState* state = this->Impl->Actors.state(actor);
   auto* mapper = actor ? vtkSurfelMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-  auto* window = this->Impl->FrameBuffer->GetContext();
+  auto* window = this->Impl->FrameBuffer ? this->Impl->FrameBuffer->GetContext() : nullptr;
   std::vector<sss::Rgb> values;
   if (!state || !mapper || !B || !window || !state->read_surfel_radiance(window, values))
   {
@@ -459,11 +463,12 @@ void vtkSubsurfacePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
   impl.Actors.release(w);
-  impl.FrameBuffer->ReleaseGraphicsResources(w);
   if (impl.Colour)
   {
+    impl.FrameBuffer->ReleaseGraphicsResources(w);
     impl.Colour->ReleaseGraphicsResources(w);
     impl.Depth->ReleaseGraphicsResources(w);
+    impl.FrameBuffer = nullptr;
     impl.Colour = nullptr;
     impl.Depth = nullptr;
   }

@@ -408,4 +408,32 @@ TEST(GpuSplats, OpaqueActorsKeepTheirDepthOrder) {
   }
 }
 
+// A window resized after its first frame draws what a new window of that size draws. The pass's
+// framebuffer kept its first size as the scene's viewport, so after a resize the image came out
+// stretched and cropped (ParaView's split views, any resized VTK window).
+TEST(GpuSplats, AResizedWindowDrawsAsANewWindowOfItsSize) {
+  const sss::SurfelCloud sphere = sss::make_fibonacci_sphere(30.0, 16000);
+  const sss::Material marble = sss::Material::preset("marble");
+  const std::vector<sss::Light> light{{Eigen::Vector3d(0.6, 0.3, 1.0), 1.0}};
+  sss::test::GpuScene resized(sphere, marble, light, Eigen::Vector3d(0, 0, 1), 2 * kSize);
+  sss::test::GpuScene fresh(sphere, marble, light, Eigen::Vector3d(0, 0, 1), kSize);
+  resized.window->Render();
+  resized.window->SetSize(kSize, kSize / 2);
+  resized.window->Render();
+  fresh.window->SetSize(kSize, kSize / 2);
+  fresh.window->Render();
+  const std::vector<unsigned char> a = grab_rgb(resized.window), b = grab_rgb(fresh.window);
+  ASSERT_EQ(a.size(), b.size());
+  int largest = 0;
+  long differing = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const int d = std::abs(int(a[i]) - int(b[i]));
+    largest = std::max(largest, d);
+    differing += d > 0 ? 1 : 0;
+  }
+  std::printf("resized against new: %ld of %zu values differ, by at most %d\n", differing,
+              a.size(), largest);
+  EXPECT_EQ(largest, 0);
+}
+
 }  // namespace
