@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Runs ParaView's pvbatch on N ranks with the plugin at hand:
-#   bash scripts/pvbatch.sh [-np N] SCRIPT.py [ARGS...]
-# (-np 1, the default, runs pvbatch alone; more runs `mpirun -np N pvbatch`). Sets
+# Runs ParaView's pvbatch on N ranks, or its GUI, with the plugin at hand:
+#   bash scripts/pvbatch.sh [-np N | --gui] SCRIPT.py [ARGS...]
+# (-np 1, the default, runs pvbatch alone; more runs `mpirun -np N pvbatch`; --gui runs
+# `paraview --script=SCRIPT.py --exit` with ARGS in SSS_SCRIPT_ARGS as JSON, since the GUI hands
+# a script none, and with settings of its own that keep the welcome dialog shut). Sets
 # SSS_PARAVIEW_PLUGIN to the plugin this checkout built (build/paraview), puts the unpacked
 # python3-paraview on PYTHONPATH when that package is not installed (Debian will not install it
 # beside python3-vtk9; scripts/setup.sh unpacks it into .deps/), lets Open MPI run as root, and
@@ -9,11 +11,15 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 ranks=1
+gui=0
 if [ "${1:-}" = "-np" ]; then
   ranks="$2"
   shift 2
+elif [ "${1:-}" = "--gui" ]; then
+  gui=1
+  shift
 fi
-[ $# -ge 1 ] || { echo "usage: $0 [-np N] SCRIPT.py [ARGS...]" >&2; exit 2; }
+[ $# -ge 1 ] || { echo "usage: $0 [-np N | --gui] SCRIPT.py [ARGS...]" >&2; exit 2; }
 export SSS_PARAVIEW_PLUGIN="${SSS_PARAVIEW_PLUGIN:-$root/build/paraview/lib/paraview-5.11/plugins/TranslucentPointClouds/TranslucentPointClouds.so}"
 [ -f "$SSS_PARAVIEW_PLUGIN" ] || { echo "$0: no plugin at $SSS_PARAVIEW_PLUGIN: run scripts/build.sh" >&2; exit 1; }
 unpacked="$root/.deps/python3-paraview/usr/lib/python3/dist-packages"
@@ -36,7 +42,20 @@ if [ -z "${DISPLAY:-}" ]; then
   xdpyinfo -display ":$n" > /dev/null 2>&1 || { echo "$0: Xvfb did not start on :$n" >&2; exit 1; }
   export DISPLAY=":$n"
 fi
-if [ "$ranks" -gt 1 ]; then
+if [ "$gui" = 1 ]; then
+  # A settings folder of the run's own: no welcome dialog (it would wait for a click), and
+  # nothing of the user's settings changes the view.
+  settings=$(mktemp -d)
+  trap 'rm -rf "$settings"; [ -z "${xvfb:-}" ] || { kill "$xvfb" 2> /dev/null; wait "$xvfb" 2> /dev/null || true; }' EXIT
+  version=$(/usr/bin/paraview --version 2> /dev/null | sed -n 's/^paraview version //p')
+  mkdir -p "$settings/.config/ParaView"
+  printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' \
+    > "$settings/.config/ParaView/ParaView$version.ini"
+  script="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
+  shift
+  SSS_SCRIPT_ARGS=$(/usr/bin/python3 -c 'import json, sys; print(json.dumps(sys.argv[1:]))' "$@") \
+    HOME="$settings" XDG_RUNTIME_DIR="$settings" /usr/bin/paraview --script="$script" --exit
+elif [ "$ranks" -gt 1 ]; then
   mpirun --oversubscribe -np "$ranks" -x PYTHONPATH -x SSS_PARAVIEW_PLUGIN -x DISPLAY \
     /usr/bin/pvbatch "$@"
 else

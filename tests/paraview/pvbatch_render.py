@@ -3,7 +3,12 @@ pvbatch (one rank or `mpirun -np N pvbatch`), with the camera, light and tone ma
 sss_render uses, so that the two images can be compared.
 
   pvbatch pvbatch_render.py PLUGIN CLOUD OUT.png [--material M] [--mm-per-unit MM] [--size WxH]
-      [--view-dir X,Y,Z] [--up X,Y,Z] [--light-dir X,Y,Z] [--split N]
+      [--view-dir X,Y,Z] [--up X,Y,Z] [--light-dir X,Y,Z] [--split N] [--layout]
+
+or in ParaView's GUI (scripts/pvbatch.sh --gui), which hands a script no arguments: then they
+come from SSS_SCRIPT_ARGS (JSON). --layout puts the view in the GUI's layout and draws it there
+first, then sets the layout to the image's size (ParaView's preview mode), as a user who opens
+the view and then resizes it.
 
 CLOUD is a .ply or .vtp of points with normals. --split N cuts it along x into N pieces of
 equal counts, --cuts X1,X2,... at those x (a .pvtp beside OUT); ParaView's reader hands the
@@ -11,7 +16,9 @@ pieces out one per rank. With -v=INFO each rank logs its surfels, the ghosts it 
 the bytes it sent.
 """
 import argparse
+import json
 import os
+import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager as sm
@@ -83,7 +90,9 @@ def main():
     p.add_argument("--light-dir", default="-0.3,0.5,0.8")
     p.add_argument("--split", type=int, default=0)
     p.add_argument("--cuts", default="")
-    a = p.parse_args()
+    p.add_argument("--layout", action="store_true")
+    given = os.environ.get("SSS_SCRIPT_ARGS")
+    a = p.parse_args(json.loads(given) if given is not None else sys.argv[1:])
 
     LoadPlugin(a.plugin, ns=globals())
     pm = sm.vtkProcessModule.GetProcessModule()
@@ -115,6 +124,11 @@ def main():
     display.SetRepresentationType("Translucent Surfels")
     display.TranslucentMaterial = a.material
     display.MillimetresPerUnit = a.mm_per_unit
+    if a.layout:
+        layout = GetLayout() or CreateLayout()
+        AssignViewToLayout(view=view, layout=layout, hint=0)
+        Render(view)  # at the layout's size
+        layout.PreviewMode = [width, height]
     # sss_render's camera: looking at the bounds' centre along -view_dir, then fitted.
     source.UpdatePipeline()
     b = source.GetDataInformation().GetBounds()
@@ -127,7 +141,7 @@ def main():
     view.CameraViewAngle = 30
     view.ResetCamera()
     Render(view)
-    SaveScreenshot(a.output, view)
+    SaveScreenshot(a.output, view, ImageResolution=[width, height])
 
 
 if __name__ == "__main__":
