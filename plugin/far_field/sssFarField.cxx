@@ -24,6 +24,10 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
   program->SetUniformf(
     "maxGroupDiffusionLengths", static_cast<float>(settings.max_group_diffusion_lengths));
   program->SetUniformf("supportRadius", static_cast<float>(settings.support_radius));
+  const float reach[3] = { static_cast<float>(settings.size_bound_reach[0]),
+    static_cast<float>(settings.size_bound_reach[1]),
+    static_cast<float>(settings.size_bound_reach[2]) };
+  program->SetUniform3f("sizeBoundReach", reach);
   program->SetUniformi("addNearField", 0);
   program->SetUniformi("addFarField", 1);
   state->vtkglEnable(GL_BLEND);

@@ -13,11 +13,19 @@ namespace sss
 
 class LitCells;
 
+// A channel bounds a group's radius in its diffusion lengths only while the group comes within
+// the channel's support radius at this fraction of the kernel's integral: farther out the groups
+// together carry less than it, so the opening angle alone bounds them. Measured on the Kinect
+// table scene (marble, 1000 mm per unit): the far field's walk 9.97 s instead of 20.5 s with the
+// bound out to the full support, the error against the reference 0.057 % mean (0.056 % before).
+constexpr double kGroupSizeBoundFraction = 1e-3;
+
 struct FarFieldSettings
 {
   double opening_angle = 0;                // a group's spread over its distance
   double max_group_diffusion_lengths = 0;  // a group's radius, in 1/s_tr
   double support_radius = 0;               // mm: sources beyond add nothing
+  double size_bound_reach[3] = {};  // mm per channel: its support at kGroupSizeBoundFraction
 };
 
 // Adds the far field of `lights` lights into the bound target with `program` (a quad over the

@@ -179,6 +179,10 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
     far.opening_angle = g.settings.opening_angle;
     far.max_group_diffusion_lengths = g.settings.max_group_diffusion_lengths;
     far.support_radius = g.support;
+    for (int c = 0; c < 3; ++c)
+    {
+      far.size_bound_reach[c] = dipole.channel[c].support_radius(kGroupSizeBoundFraction);
+    }
     add_far_field(state, *g.gather_quad, gather, g.cells, lights, far);
   }
   g.cells.deactivate();

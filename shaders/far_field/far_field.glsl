@@ -4,8 +4,9 @@
 // of cells as one source, each dipole pole by its own mean and covariance (dipole.glsl), once
 // its spread (twice the RMS distance of its points from their mean) is below openingAngle
 // times its distance from x, its radius spans at most maxGroupDiffusionLengths of every
-// channel whose kernel still matters there, and x lies beyond the clamp of every pole by the
-// poles' spread (secondOrderHolds); a cell wider than a quarter of its distance from x (where
+// channel whose kernel still carries a share of its integral there (the group's nearest point
+// within sizeBoundReach), and x lies beyond the clamp of every pole by the poles' spread
+// (secondOrderHolds); a cell wider than a quarter of its distance from x (where
 // the spacing is coarse for the near-field table's reach, as in the far rows of a Kinect scan)
 // by a ring rule over its disc (cellRd). The GPU form of the CPU reference's source tree
 // (core/far_field/source_tree.h). Needs dipole.glsl.
@@ -23,6 +24,8 @@ uniform float openingAngle;
 uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral
 uniform float farFrom;        // mm
+uniform vec3 sizeBoundReach;  // mm, per channel: beyond it a group's size is bound by the
+                              // opening angle alone (sssFarField.h)
 
 const int cellRulePieces = 64;  // cellRd's pieces are at least a 64th of the disc's area
 const int wideCellsPerWalk = 16;  // most cells a walk sums by cellRd; the rest by expansion
@@ -98,8 +101,9 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
       continue;
     }
     bool straddles = d - size < farFrom;  // holds cells nearer than farFrom: open it
-    // The fastest decay among channels not yet below e^-16 (no loop: see dipole.glsl).
-    vec3 significant = step(sTr * (d - size), vec3(16.0)) * sTr;
+    // The fastest decay among the channels whose size bound still holds here (no loop: see
+    // dipole.glsl).
+    vec3 significant = step(vec3(d - size), sizeBoundReach) * sTr;
     float sTrSignificant = max(max(significant.r, significant.g), significant.b);
     vec4 c0 = texelFetch(sourceCovariance0, texel, 0);
     vec4 c1 = texelFetch(sourceCovariance1, texel, 0);
