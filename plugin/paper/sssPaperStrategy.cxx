@@ -13,7 +13,7 @@
 
 #include "dipole.h"
 #include "local_surfels.h"
-#include "morton_order.h"
+#include "hilbert_order.h"
 #include "virtual_grid.h"
 
 #include "vtkOpenGLBufferObject.h"
@@ -38,7 +38,7 @@ namespace
 constexpr int kPaperGridLevel = 6;
 }
 
-// The virtual points as a list texture: in Morton order of position, 16 to a 4 x 4 texel
+// The virtual points as a list texture: in Hilbert order of position, 16 to a 4 x 4 texel
 // block (itself in Morton order), blocks row by row.
 struct ReceiverList
 {
@@ -50,7 +50,7 @@ struct ReceiverList
   void upload(vtkOpenGLRenderWindow* window, const std::vector<Eigen::Vector3d>& positions)
   {
     const std::size_t n = positions.size();
-    const std::vector<std::size_t> order = morton_order(positions);
+    const std::vector<std::size_t> order = hilbert_order(positions);
     const int blocks_per_row = kListWidth / 4;
     const std::size_t blocks = (n + 15) / 16;
     width = kListWidth;

@@ -4,7 +4,7 @@
 
 #include "local_surface.h"
 #include "local_surfels.h"
-#include "morton_order.h"
+#include "hilbert_order.h"
 #include "surfel_cells.h"
 
 #include "vtkOpenGLBufferObject.h"
@@ -60,7 +60,7 @@ bool SurfelList::upload(vtkOpenGLRenderWindow* window, const LocalSurfels& local
   const SurfelCells& cells, std::string& error)
 {
   const std::size_t n = local.size();
-  const std::vector<std::size_t> order = morton_order(local.positions);
+  const std::vector<std::size_t> order = hilbert_order(local.positions);
   const int bits = CeilLog2(std::max<std::size_t>(n, 1));
   const int xbits = (bits + 1) / 2, ybits = bits - xbits;
   width_ = 1 << xbits;

@@ -1,4 +1,4 @@
-// Step 2's surfel list (surfel_list.glsl): the surfels in Morton order of position, laid out
+// Step 2's surfel list (surfel_list.glsl): the surfels in Hilbert order of position, laid out
 // in 2-D Morton order too, so that every 2^k x 2^k square of texels holds surfels that lie
 // close together (the source pyramid reduces such squares, sssLitCells). Per texel: the
 // surfel's point and surface thickness, normal and curvature, cell and albedo.

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 // The paper's step 2: B (eq. 17) by its 49 taps (gather_paper.glsl) at every kept virtual
-// point, drawn as one quad over the points' list (Morton order of position, 16 to a 4 x 4
+// point, drawn as one quad over the points' list (Hilbert order of position, 16 to a 4 x 4
 // texel block, so that the rasteriser shades neighbours side by side).
 
 uniform sampler2D receivers;  // xyz: local mm, w: 1 where a point

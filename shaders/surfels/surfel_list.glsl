@@ -1,4 +1,4 @@
-// The surfels of step 2 as one list texture in Morton order of position, laid out in 2-D Morton
+// The surfels of step 2 as one list texture in Hilbert order of position, laid out in 2-D Morton
 // order too, so that every 2^k x 2^k square of texels holds surfels that lie close together
 // (the far field's source pyramid reduces such squares) and the rasteriser's 4 x 4 blocks shade
 // neighbours side by side. Texels past the last surfel are empty (thickness 0).
