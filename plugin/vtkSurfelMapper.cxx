@@ -241,9 +241,12 @@ const sss::PreparedSurfels& vtkSurfelMapper::UpdateSurfels(vtkActor* act)
   this->Impl->Prepared = sss::prepare_surfels(input, choice, colours, fallback);
   this->Impl->PreparedTime.Modified();
   const sss::PreparedSurfels& p = this->Impl->Prepared;
+  // An empty polydata draws nothing, silently, as VTK's mappers do: ParaView hands one to
+  // every rank without a piece and to the client of a pvserver that renders remotely.
+  const bool emptyInput = input && input->GetNumberOfPoints() == 0;
   if (!p.error.empty())
   {
-    if (p.error != this->Impl->ReportedProblem)
+    if (p.error != this->Impl->ReportedProblem && !emptyInput)
     {
       vtkErrorMacro(<< "nothing to draw: " << p.error);
     }

@@ -6,7 +6,8 @@ sss_render uses, so that the two images can be compared.
       [--view-dir X,Y,Z] [--up X,Y,Z] [--light-dir X,Y,Z] [--split N] [--layout]
 
 or in ParaView's GUI (scripts/pvbatch.sh --gui), which hands a script no arguments: then they
-come from SSS_SCRIPT_ARGS (JSON). --layout puts the view in the GUI's layout and draws it there
+come from SSS_SCRIPT_ARGS (JSON), or as the Python client of a pvserver (scripts/pvbatch.sh
+--client-server N passes --url cs://HOST:PORT): the plugin is loaded on both sides. --layout puts the view in the GUI's layout and draws it there
 first, then sets the layout to the image's size (ParaView's preview mode), as a user who opens
 the view and then resizes it.
 
@@ -91,9 +92,14 @@ def main():
     p.add_argument("--split", type=int, default=0)
     p.add_argument("--cuts", default="")
     p.add_argument("--layout", action="store_true")
+    p.add_argument("--url", default="")
     given = os.environ.get("SSS_SCRIPT_ARGS")
     a = p.parse_args(json.loads(given) if given is not None else sys.argv[1:])
 
+    if a.url:
+        host, port = a.url.split("://", 1)[-1].rsplit(":", 1)
+        Connect(host, int(port))
+        LoadPlugin(a.plugin, remote=False, ns=globals())  # the client's proxies of the view
     LoadPlugin(a.plugin, ns=globals())
     pm = sm.vtkProcessModule.GetProcessModule()
     cloud = a.cloud

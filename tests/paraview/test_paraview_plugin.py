@@ -10,6 +10,8 @@
                                                         on 2 ranks
   test_paraview_plugin.py WORKDIR gui                   ParaView's GUI, the view resized after
                                                         its first frame, against pvbatch
+  test_paraview_plugin.py WORKDIR client-server N       a Python client of N pvserver ranks
+                                                        against pvbatch on N ranks
 
 pvbatch runs through scripts/pvbatch.sh (Xvfb when there is no DISPLAY, Open MPI's mpirun).
 Images are compared in 8-bit sRGB over the pixels where either image shows the object.
@@ -165,6 +167,26 @@ def main():
         paraview_gui(cloud, out("gui.png"), "--layout", *SCENE)
         d = difference(out("gui_pvbatch.png"), out("gui.png"))
         report("ParaView's GUI against pvbatch", d)
+        assert d["mean"] < 0.1 and d["p999"] <= 2.0, d
+    elif case == "client-server":
+        # The render script as the client of `mpirun -np N pvserver`, the cloud in N pieces:
+        # the server renders (IceT over its ranks) and the client receives the image, the same
+        # as pvbatch's on N ranks to rounding (the `ranks N` case's image, made here when that
+        # case has not run). The client's representation holds no points and draws nothing
+        # without an error.
+        n = int(sys.argv[3])
+        baseline = out("pieces_%d.png" % n)
+        if not os.path.exists(baseline):
+            pvbatch(n, cloud, baseline, "--split", str(n), *SCENE)
+        log = run(["bash", PVBATCH, "--client-server", str(n), RENDER,
+                   os.environ["SSS_PARAVIEW_PLUGIN"], cloud, out("client_server_%d.png" % n),
+                   "--split", str(n)] + SCENE)
+        print("ghost surfels per server rank:")
+        lines = ghost_lines(log)
+        assert len(lines) == n, "expected a ghost report from each of %d server ranks" % n
+        assert "nothing to draw" not in log, log[-2000:]
+        d = difference(baseline, out("client_server_%d.png" % n))
+        report("client of %d pvserver ranks against pvbatch on %d ranks" % (n, n), d)
         assert d["mean"] < 0.1 and d["p999"] <= 2.0, d
     else:
         sys.exit("unknown case " + case)
