@@ -37,14 +37,22 @@ if ! dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null | grep -q "instal
   export PYTHONPATH="$unpacked${PYTHONPATH:+:$PYTHONPATH}"
 fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# What this run started or made, gone before it ends, so that a next run cannot meet it.
+xvfb="" server="" scratch=""
+clean_up() {
+  for process in $server $xvfb; do
+    kill "$process" 2> /dev/null || true
+    wait "$process" 2> /dev/null || true
+  done
+  [ -z "$scratch" ] || rm -rf "$scratch"
+}
+trap clean_up EXIT
 if [ -z "${DISPLAY:-}" ]; then
   # One Xvfb for all ranks, on the first free display, ready before they connect.
   n=90
   while [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ]; do n=$((n + 1)); done
   Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp -noreset > /dev/null 2>&1 &
   xvfb=$!
-  # Gone before this script ends, so that a next run cannot meet it on the same display.
-  trap 'kill "$xvfb" 2> /dev/null; wait "$xvfb" 2> /dev/null || true' EXIT
   # Ready when a client can connect; -noreset: the server must not restart when that client
   # (or a rank) disconnects while other ranks connect.
   for _ in $(seq 200); do xdpyinfo -display ":$n" > /dev/null 2>&1 && break; sleep 0.05; done
@@ -54,8 +62,8 @@ fi
 if [ "$gui" = 1 ]; then
   # A settings folder of the run's own: no welcome dialog (it would wait for a click), and
   # nothing of the user's settings changes the view.
-  settings=$(mktemp -d)
-  trap 'rm -rf "$settings"; [ -z "${xvfb:-}" ] || { kill "$xvfb" 2> /dev/null; wait "$xvfb" 2> /dev/null || true; }' EXIT
+  scratch=$(mktemp -d)
+  settings="$scratch"
   version=$(/usr/bin/paraview --version 2> /dev/null | sed -n 's/^paraview version //p')
   mkdir -p "$settings/.config/ParaView"
   printf '[General]\nGeneralSettings.ShowWelcomeDialog=0\n' \
@@ -66,11 +74,11 @@ if [ "$gui" = 1 ]; then
     HOME="$settings" XDG_RUNTIME_DIR="$settings" /usr/bin/paraview --script="$script" --exit
 elif [ "$servers" -gt 0 ]; then
   port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("localhost", 0)); print(s.getsockname()[1])')
-  server_log=$(mktemp)
+  scratch=$(mktemp -d)
+  server_log="$scratch/pvserver.log"
   mpirun --oversubscribe -np "$servers" -x PYTHONPATH -x SSS_PARAVIEW_PLUGIN -x DISPLAY \
     /usr/bin/pvserver -v=INFO --server-port="$port" > "$server_log" 2>&1 &
   server=$!
-  trap 'kill "$server" 2> /dev/null || true; wait "$server" 2> /dev/null || true; rm -f "$server_log"; [ -z "${xvfb:-}" ] || { kill "$xvfb" 2> /dev/null; wait "$xvfb" 2> /dev/null || true; }' EXIT
   for _ in $(seq 600); do
     grep -q "Accepting connection" "$server_log" && break
     kill -0 "$server" 2> /dev/null || { cat "$server_log" >&2; echo "$0: pvserver ended before it took a connection" >&2; exit 1; }
