@@ -250,6 +250,7 @@ void vtkSubsurfacePass::Record(const sss::StepReport& report)
     this->LastFarFieldSeconds = report.seconds_far;
     this->LastHandOverSeconds = report.seconds_hand_over;
     this->LastLitCells = static_cast<vtkIdType>(report.lit_cells);
+    this->LastRefinedCells = static_cast<vtkIdType>(report.refined_cells);
   }
   this->LastSurfels = static_cast<vtkIdType>(report.surfel_count);
 }
@@ -541,9 +542,10 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Last near field: to " << this->LastNearReachMillimetres << " mm, "
      << this->LastNearFieldEntries << " entries; far field from " << this->LastFarFromMillimetres
      << " mm\n";
-  os << indent << "Last counts (translucent actors, surfels, lit cells, virtual points): "
+  os << indent
+     << "Last counts (translucent actors, surfels, lit cells, refined cells, virtual points): "
      << this->LastTranslucentActors << " " << this->LastSurfels << " " << this->LastLitCells
-     << " " << this->LastVirtualPoints << " (grid level " << this->LastGridLevel << ", spacing "
+     << " " << this->LastRefinedCells << " " << this->LastVirtualPoints << " (grid level " << this->LastGridLevel << ", spacing "
      << this->LastGridSpacingMillimetres << " mm)\n";
   os << indent << "Linear image: " << this->LinearWidth << " x " << this->LinearHeight << "\n";
 }

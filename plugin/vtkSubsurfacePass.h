@@ -237,6 +237,9 @@ public:
   /** The last light move by step in one line: "map 0.11 s, cells 0.21 s, ...". */
   std::string GetLastLightMoveProfile() const;
   vtkGetMacro(LastLitCells, vtkIdType);
+  /** NEAR_FAR: the cells whose first samples disagreed (a shadow edge or the terminator
+   * crosses them), lit again with eight times as many, over all lights. */
+  vtkGetMacro(LastRefinedCells, vtkIdType);
   vtkGetMacro(LastSurfels, vtkIdType);
   vtkGetMacro(LastMapWidth, int);
   vtkGetMacro(LastMapHeight, int);
@@ -292,6 +295,7 @@ protected:
   double LastFarFieldSeconds = 0;
   double LastHandOverSeconds = 0;
   vtkIdType LastLitCells = 0;
+  vtkIdType LastRefinedCells = 0;
   vtkIdType LastSurfels = 0;
   int LastMapWidth = 0;
   int LastMapHeight = 0;

@@ -132,6 +132,7 @@ void write_stats(const Options& o, const sss::Material& m, const sss::SurfelClou
         << ", \"noise_p90\": " << found.noise_p90 << "},\n"
         << "  \"counts\": {\"surfels\": " << cloud.size()
         << ", \"lit_cells\": " << pass->GetLastLitCells()
+        << ", \"refined_cells\": " << pass->GetLastRefinedCells()
         << ", \"near_field_entries\": " << pass->GetLastNearFieldEntries()
         << ", \"virtual_points\": " << pass->GetLastVirtualPoints() << "},\n"
         << "  \"settings\": {\"surfel_radius\": " << cloud.radius

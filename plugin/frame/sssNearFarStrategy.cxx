@@ -132,7 +132,8 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
   const LightMapAtlas maps = light_maps.atlas();
   Gpu& g = *gpu_;
   Stopwatch clock;
-  if (!g.cells.light(window, g.list, maps, g.cell_radius, g.settings.cell_samples, error))
+  if (!g.cells.light(
+        window, g.list, maps, g.cell_radius, g.settings.cell_samples, report.refined_cells, error))
   {
     return false;
   }

@@ -44,7 +44,9 @@ struct StepReport
   // to the view.
   double seconds_cells = 0, seconds_pyramid = 0, seconds_near = 0, seconds_far = 0,
          seconds_hand_over = 0;
-  std::size_t lit_cells = 0, virtual_point_count = 0, surfel_count = 0, near_entries = 0;
+  // refined_cells: those whose first points disagreed, lit again with more (sssLitCells).
+  std::size_t lit_cells = 0, refined_cells = 0, virtual_point_count = 0, surfel_count = 0,
+              near_entries = 0;
   int map_width = 0, map_height = 0, grid_level = 0;
   double texel_mm = 0, grid_spacing_mm = 0;
   double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)

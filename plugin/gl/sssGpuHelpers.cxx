@@ -85,6 +85,18 @@ void ProgramVAO::bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const 
   }
 }
 
+void ProgramVAO::bind_vec2(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name)
+{
+  vao->Bind();
+  if (needs(p))
+  {
+    vao->ReleaseGraphicsResources();
+    vao->Bind();
+    vao->AddAttributeArray(p, buffer, name, 0, 8, VTK_FLOAT, 2, false);
+    program = p;
+  }
+}
+
 void ProgramVAO::release()
 {
   vao->ReleaseGraphicsResources();

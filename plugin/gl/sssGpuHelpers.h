@@ -71,6 +71,8 @@ struct ProgramVAO
   // the program changed.
   void bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name,
     vtkOpenGLBufferObject* buffer2 = nullptr, const char* name2 = nullptr);
+  // The same with one vec2 attribute alone.
+  void bind_vec2(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name);
   void release();
 };
 

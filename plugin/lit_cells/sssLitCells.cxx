@@ -6,12 +6,17 @@
 #include "sss_fresnel_table.h"
 #include "sss_light_maps.h"
 #include "sss_light_visibility.h"
+#include "sss_cell_samples.h"
 #include "sss_pyramid_reduce_fs.h"
+#include "sss_refined_cells_fs.h"
+#include "sss_refined_cells_scatter_fs.h"
+#include "sss_refined_cells_scatter_vs.h"
 #include "sss_surfel_irradiance_fs.h"
 #include "sss_surfel_list.h"
 
 #include "fresnel.h"
 
+#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -93,6 +98,18 @@ void SetMaps(vtkShaderProgram* program, const LightMapAtlas& maps)
   program->SetUniformi("mapSurfel", maps.surfel->GetTextureUnit());
 }
 
+// What the first pass and the refined cells' pass share: the light maps, the surfel list, the
+// Fresnel table and the curvature clamp. All must be active.
+void SetCellUniforms(vtkShaderProgram* program, const SurfelList& list, const LightMapAtlas& maps,
+  vtkTextureObject* fresnel, double disc_radius)
+{
+  SetMaps(program, maps);
+  program->SetUniformf("kappaLimitCell", static_cast<float>(1.0 / disc_radius));
+  list.set(program);
+  program->SetUniformi("fresnelTable", fresnel->GetTextureUnit());
+  program->SetUniformi("fresnelTableSize", kFresnelTableSize);
+}
+
 void Barrier()
 {
   if (GLEW_VERSION_4_5 || GLEW_ARB_texture_barrier)
@@ -111,7 +128,10 @@ LitCells::~LitCells() = default;
 
 void LitCells::release(vtkWindow* window)
 {
-  release_held(window, E_, fresnel_, irradiance_quad_, reduce_quad_);
+  release_held(window, E_, fresnel_, irradiance_quad_, refined_quad_, reduce_quad_, refined_cell_,
+    refined_E_);
+  refined_texels_->ReleaseGraphicsResources();
+  scatter_vao_.release();
   for (auto& t : source_)
   {
     release_held(window, t);
@@ -188,14 +208,19 @@ int LitCells::level_height(int light, int level) const
 }
 
 bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
-  const LightMapAtlas& maps, double disc_radius, int cell_samples, std::string& error)
+  const LightMapAtlas& maps, double disc_radius, int cell_samples, std::size_t& refined,
+  std::string& error)
 {
   const int lights = static_cast<int>(maps.maps.size());
   allocate(window, list.width(), list.height(), std::max(lights, 1));
-  static const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs,
-    std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table);
+  const std::string pieces =
+    std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table +
+    sss_cell_samples;
+  static const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs, pieces);
+  static const std::string refined_fs = shader_with_pieces(sss_refined_cells_fs, pieces);
   vtkShaderProgram* irradiance = ready_quad(irradiance_quad_, window, irradiance_fs.c_str());
-  if (!irradiance || !ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs))
+  if (!irradiance || !ready_quad(refined_quad_, window, refined_fs.c_str()) ||
+    !ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs))
   {
     error = "the irradiance or pyramid shader did not compile";
     return false;
@@ -228,13 +253,10 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   maps.surfel->Activate();
   list.activate();
   fresnel_->Activate();
-  SetMaps(irradiance, maps);
-  irradiance->SetUniformf("kappaLimitCell", static_cast<float>(1.0 / disc_radius));
-  list.set(irradiance);
-  irradiance->SetUniformi("fresnelTable", fresnel_->GetTextureUnit());
-  irradiance->SetUniformi("fresnelTableSize", kFresnelTableSize);
+  SetCellUniforms(irradiance, list, maps, fresnel_, disc_radius);
+  const int refined_samples = kRefinedSamplesPerSample * cell_samples;
   irradiance->SetUniformi("cellSamples", cell_samples);
-  irradiance->SetUniformi("cellRefinedSamples", kRefinedSamplesPerSample * cell_samples);
+  irradiance->SetUniformi("cellRefinedSamples", refined_samples);
   for (int l = 0; l < lights; ++l)
   {
     irradiance->SetUniformi("light", l);
@@ -242,12 +264,106 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
     state->vtkglViewport(r.x, r.y, r.width, r.height);
     irradiance_quad_->Render();
   }
+  fbo_->RemoveColorAttachments(kCellSources + 1);
+  refined = 0;
+  for (int l = 0; l < lights; ++l)
+  {
+    refined += refine(window, list, maps, disc_radius, refined_samples, l);
+  }
   fresnel_->Deactivate();
   list.deactivate();
   maps.surfel->Deactivate();
-  fbo_->RemoveColorAttachments(kCellSources + 1);
   state->PopFramebufferBindings();
   return true;
+}
+
+std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& list,
+  const LightMapAtlas& maps, double disc_radius, int refined_samples, int l)
+{
+  // The marked cells, from E's alpha.
+  const Rect& r = levels_[l][0];
+  std::vector<float> E(4 * std::size_t(r.width) * std::size_t(r.height));
+  fbo_->AddColorAttachment(0, E_);
+  fbo_->ActivateReadBuffer(0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(r.x, r.y, r.width, r.height, GL_RGBA, GL_FLOAT, E.data());
+  fbo_->RemoveColorAttachments(1);
+  std::vector<float> texels;
+  for (int y = 0; y < r.height; ++y)
+  {
+    for (int x = 0; x < r.width; ++x)
+    {
+      if (E[4 * (std::size_t(y) * r.width + x) + 3] > 0.5f)
+      {
+        texels.push_back(float(x));
+        texels.push_back(float(y));
+      }
+    }
+  }
+  const std::size_t count = texels.size() / 2;
+  if (count == 0)
+  {
+    return 0;
+  }
+
+  // Lit again in a block of their own, row by row.
+  const int width = r.width;
+  const int height = static_cast<int>((count + width - 1) / width);
+  texels.resize(2 * std::size_t(width) * height, 0.0f);
+  if (!refined_cell_)
+  {
+    refined_cell_ = float_texture_2d(window, width, height, 2);
+  }
+  refined_cell_->Create2DFromRaw(width, height, 2, VTK_FLOAT, texels.data());  // same handle
+  if (!refined_E_ || refined_E_->GetWidth() != unsigned(width) ||
+    refined_E_->GetHeight() < unsigned(height))
+  {
+    refined_E_ = float_texture_2d(window, width, height);
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkShaderProgram* program = refined_quad_->Program;
+  window->GetShaderCache()->ReadyShaderProgram(program);
+  SetCellUniforms(program, list, maps, fresnel_, disc_radius);
+  refined_cell_->Activate();
+  program->SetUniformi("refinedCell", refined_cell_->GetTextureUnit());
+  program->SetUniformi("refinedCount", static_cast<int>(count));
+  program->SetUniformi("cellRefinedSamples", refined_samples);
+  program->SetUniformi("light", l);
+  fbo_->AddColorAttachment(0, refined_E_);
+  fbo_->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, width, height);
+  refined_quad_->Render();
+  fbo_->RemoveColorAttachments(1);
+  refined_cell_->Deactivate();
+
+  // Each back in its texel: E, and the power and weight of the pyramid's finest level.
+  static const std::string scatter_fs =
+    shader_with_pieces(sss_refined_cells_scatter_fs, sss_surfel_list);
+  vtkShaderProgram* scatter = window->GetShaderCache()->ReadyShaderProgram(
+    sss_refined_cells_scatter_vs, scatter_fs.c_str(), "");
+  if (!scatter)
+  {
+    return count;  // the first estimate stays
+  }
+  texels.resize(2 * count);
+  refined_texels_->Upload(texels, vtkOpenGLBufferObject::ArrayBuffer);
+  scatter_vao_.bind_vec2(scatter, refined_texels_, "cellTexel");
+  list.set(scatter);
+  refined_E_->Activate();
+  scatter->SetUniformi("refinedE", refined_E_->GetTextureUnit());
+  scatter->SetUniformi("refinedWidth", width);
+  const float size[2] = { float(r.width), float(r.height) };
+  scatter->SetUniform2f("listSize", size);
+  fbo_->AddColorAttachment(0, E_);
+  fbo_->AddColorAttachment(1, source_[0]);
+  fbo_->AddColorAttachment(2, source_[1]);
+  fbo_->ActivateDrawBuffers(3);
+  state->vtkglViewport(r.x, r.y, r.width, r.height);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+  scatter_vao_.vao->Release();
+  fbo_->RemoveColorAttachments(3);
+  refined_E_->Deactivate();
+  return count;
 }
 
 void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
