@@ -59,6 +59,19 @@ vec3 cellRd(vec3 p, vec3 n, float r, vec3 x, float d)
   return sum;
 }
 
+// A node (xy: texel in its level, z: level) in one word for the walk's stack, a third of the
+// memory an ivec3 stack moves per push and pop: levels below SSS_MAX_LEVELS (15), texels below
+// 2^14 (sssSurfelList.cxx caps a list at 16384 a side).
+uint packNode(ivec3 node)
+{
+  return (uint(node.z) << 28) | (uint(node.y) << 14) | uint(node.x);
+}
+
+ivec3 unpackNode(uint word)
+{
+  return ivec3(int(word & 16383u), int((word >> 14) & 16383u), int(word >> 28));
+}
+
 // The part of the far field at x from the cells under one node `root` (xy: texel in its
 // level, z: level) of light `light`'s pyramid. Step 2 sums it over the nodes of a level low
 // enough that no walk visits more than 21,845 nodes: llvmpipe ends a shader invocation's
@@ -70,17 +83,17 @@ vec3 cellRd(vec3 p, vec3 n, float r, vec3 x, float d)
 vec3 farFieldB(vec3 x, int light, ivec3 root)
 {
   vec3 sum = vec3(0.0);
-  ivec3 stack[64];
+  uint stack[64];  // nodes packed by packNode
   int base = light * SSS_MAX_LEVELS;
   int depth = 0;
-  stack[depth++] = root;
+  stack[depth++] = packNode(root);
   // Cells wider than a quarter of their distance from x, summed by cellRd after the walk so
   // that its rings do not run inside the walk's loop.
   ivec2 wideCell[wideCellsPerWalk];
   int wideCells = 0;
   while (depth > 0)
   {
-    ivec3 node = stack[--depth];
+    ivec3 node = unpackNode(stack[--depth]);
     int level = node.z;
     ivec2 texel = ivec2(sourceLevelRect[base + level].xy) + node.xy;
     vec4 point = texelFetch(sourcePoint, texel, 0);
@@ -133,7 +146,7 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
       ivec2 child = 2 * node.xy + ivec2(k & 1, k >> 1);
       if (child.x < childSize.x && child.y < childSize.y)
       {
-        stack[depth++] = ivec3(child, level - 1);
+        stack[depth++] = packNode(ivec3(child, level - 1));
       }
     }
   }
