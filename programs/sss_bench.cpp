@@ -4,7 +4,9 @@
 // (the near-field table: a geometry or material change), the light's steps, the near-field
 // table's memory, and the per-point error at 3000 points against the CPU reference (cached on
 // disk); plain VTK points of the same cloud are the baseline. A scale sweep renders the mesh
-// sampled to N points. Writes CSV, then bench_report.py writes the Markdown table and the plots.
+// sampled to N points, and a synthetic room scanned from one station beside the same room
+// sampled uniformly at the same counts. Writes CSV, then bench_report.py writes the Markdown
+// table and the plots.
 #include <vtkFloatArray.h>
 #include <vtkRenderWindow.h>
 
@@ -28,6 +30,7 @@
 #include "bench_csv.h"
 #include "cli_options.h"
 #include "cloud_input.h"
+#include "room_scan.h"
 #include "error_metric.h"
 #include "procedural_shapes.h"
 #include "reference_cache.h"
@@ -75,11 +78,17 @@ options (default in brackets)
   --samples N          for given PLY meshes: N points sampled on the surface [0: vertices]
   --memory-cap MIB     largest memory a file or --samples may claim [half the physical memory]
   --sweep-mesh FILE    mesh the scale sweep samples [the shared dragon]
-  --sweep-points LIST  point counts of the scale sweep [100000,300000,1000000,2000000,5000000]
+  --sweep-points LIST  point counts of the scale sweep, or none
+                       [100000,300000,1000000,2000000,5000000]
   --sweep-strategies L settings the scale sweep times (as in --settings), or none; at each
                        point count it also times the view alone (blended splats and hard
                        discs, radiance given) [paper,near-far]
-  --sweep-only         only the scale sweep
+  --sweep-only         only the scale sweep (and the rooms)
+  --rooms LIST         point counts of the room sweep, or none: a 10 x 6 x 3 m room open
+                       to the sky, scanned from one station (density falling with range
+                       and incidence, 3 mm range noise) and sampled uniformly, both read
+                       as sss_render reads a PCD, timed like the scale sweep in its first
+                       material [100000,1000000]
   --settings LIST      measure these settings instead of the sweep: comma-separated
                        quality presets (interactive, balanced, accurate) or
                        strategy[:map[:angle[:samples]]] (strategy near-far or paper; largest
@@ -108,6 +117,7 @@ struct Options {
   std::string scale_mesh;
   std::vector<std::size_t> scale_points{100000, 300000, 1000000, 2000000, 5000000};
   std::vector<std::string> scale_strategies{"paper", "near-far"};
+  std::vector<std::size_t> room_points{100000, 1000000};
   std::vector<std::string> settings;  // replaces the sweep when given
   int frames = 8;
   int size = 512;
@@ -208,12 +218,20 @@ Options parse(int argc, char** argv) {
       o.scale_mesh = value();
     } else if (flag == "--sweep-points") {
       o.scale_points.clear();
-      for (const std::string& n : split(value()))
-        o.scale_points.push_back(sss::cli::count(flag, n, 1e9));
+      const std::string list = value();
+      if (list != "none")
+        for (const std::string& n : split(list))
+          o.scale_points.push_back(sss::cli::count(flag, n, 1e9));
     } else if (flag == "--sweep-strategies") {
       o.scale_strategies = split(value());
       if (o.scale_strategies == std::vector<std::string>{"none"}) o.scale_strategies.clear();
       for (const std::string& text : o.scale_strategies) setting_of(text);
+    } else if (flag == "--rooms") {
+      o.room_points.clear();
+      const std::string list = value();
+      if (list != "none")
+        for (const std::string& n : split(list))
+          o.room_points.push_back(sss::cli::count(flag, n, 1e9));
     } else if (flag == "--sweep-only") {
       o.scale_only = true;
     } else if (flag == "--settings") {
@@ -470,6 +488,38 @@ void run_view(const Options& o, TranslucentScene& scene, const Cloud& cloud, dou
   scene.pass->SetPrecomputedRadiance(scene.actor, nullptr);
 }
 
+// Times one cloud of a scale sweep in `material`: plain points, the view alone (with_view),
+// then each of the sweep's settings that a smaller cloud did not put over the budget.
+void time_at_scale(const Options& o, const Cloud& cloud, const sss::Material& material,
+                   bool with_view, std::vector<std::string>& over_budget, std::ostream& csv) {
+  auto window = make_window(o);
+  TranslucentScene scene(window, cloud.surfels, material, {{cloud.light, 1.0}});
+  scene.aim_camera(cloud.surfels.positions, cloud.view_dir, cloud.up, false);
+  scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
+  scene.window->Render();
+  const double plain = sss::cli::time_plain_points(scene, o.frames);
+  if (with_view) run_view(o, scene, cloud, plain, csv);
+  for (const std::string& strategy : o.scale_strategies) {
+    if (std::find(over_budget.begin(), over_budget.end(), strategy) != over_budget.end()) {
+      std::fprintf(stderr, "  %-9s skipped (a smaller cloud took over %g s)\n", strategy.c_str(),
+                   o.max_bake_s);
+      continue;
+    }
+    Row row;
+    row.kind = "scale";
+    row.cloud = cloud.name;
+    row.points = cloud.surfels.size();
+    row.material = material.name;
+    row.plain_points_s = plain;
+    const Setting s = setting_of(strategy);
+    measure(scene, s, o.frames, row);
+    row.peak_rss_mb = peak_rss_mb();
+    print_row(row);
+    emit(csv, row);
+    if (row.bake_s + row.light_s > o.max_bake_s) over_budget.push_back(strategy);
+  }
+}
+
 void run_scale(const Options& o, std::ostream& csv) {
   const bool procedural = o.scale_mesh.empty() && o.quick;
   const std::string mesh =
@@ -485,7 +535,7 @@ void run_scale(const Options& o, std::ostream& csv) {
   for (std::size_t n : o.scale_points) {
     reset_peak_rss();
     sss::Stopwatch clock;
-    Cloud cloud;
+    Cloud cloud{"", {}, mm_per_unit, kObjectLight, kObjectView, kObjectUp, {}};
     if (procedural) {  // the torus's surface is 4 pi^2 R r = 8290 mm^2: spacing for n points
       cloud.surfels = sss::make_torus(30.0, 7.0, std::sqrt(8290.0 / static_cast<double>(n)));
       cloud.surfels.validate();
@@ -496,31 +546,46 @@ void run_scale(const Options& o, std::ostream& csv) {
     }
     sss::assign_splat_radii(cloud.surfels);
     std::fprintf(stderr, "scale: %zu surfels (%.1f s to make)\n", cloud.surfels.size(), clock.lap());
-    auto window = make_window(o);
-    TranslucentScene scene(window, cloud.surfels, material, {{kObjectLight, 1.0}});
-    scene.aim_camera(cloud.surfels.positions, kObjectView, kObjectUp, false);
-    scene.pass->SetKernelStrategy(vtkSubsurfacePass::PAPER);
-    scene.window->Render();
-    const double plain = sss::cli::time_plain_points(scene, o.frames);
-    run_view(o, scene, cloud, plain, csv);
-    for (const std::string& strategy : o.scale_strategies) {
-      if (std::find(over_budget.begin(), over_budget.end(), strategy) != over_budget.end()) {
-        std::fprintf(stderr, "  %-9s skipped (a smaller cloud took over %g s)\n", strategy.c_str(),
-                     o.max_bake_s);
-        continue;
-      }
-      Row row;
-      row.kind = "scale";
-      row.cloud = cloud.name;
-      row.points = cloud.surfels.size();
-      row.material = material.name;
-      row.plain_points_s = plain;
-      const Setting s = setting_of(strategy);
-      measure(scene, s, o.frames, row);
-      row.peak_rss_mb = peak_rss_mb();
-      print_row(row);
-      emit(csv, row);
-      if (row.bake_s + row.light_s > o.max_bake_s) over_budget.push_back(strategy);
+    time_at_scale(o, cloud, material, true, over_budget, csv);
+  }
+}
+
+// The rooms (room_scan.h) at each count, from one station and uniform, written as a PCD whose
+// viewpoint is the station and read back as sss_render reads it (normals towards the station,
+// isolated points left out, the measured surface, per-point radii where the spacing spreads).
+// Lit from above through the open top and seen from above, at 1000 mm per unit.
+void run_rooms(const Options& o, std::ostream& csv) {
+  const sss::Material material = sss::Material::preset(o.materials[0], sss::kDefaultEta, 1000.0);
+  constexpr double kRangeNoise = 0.003;  // m
+  std::vector<std::string> over_budget[2];
+  for (std::size_t n : o.room_points) {
+    for (int uniform = 0; uniform < 2; ++uniform) {
+      reset_peak_rss();
+      sss::Stopwatch clock;
+      const std::vector<Eigen::Vector3d> points = uniform
+                                                    ? sss::uniform_open_room(n, kRangeNoise, 5)
+                                                    : sss::open_room_scan(n, kRangeNoise, 5);
+      const fs::path pcd = o.out / "room.pcd";
+      sss::write_whole_file(pcd.string(), [&](std::ostream& out) {
+        out << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH "
+            << points.size() << "\nHEIGHT 1\nVIEWPOINT " << sss::kRoomStation[0] << ' '
+            << sss::kRoomStation[1] << ' ' << sss::kRoomStation[2] << " 1 0 0 0\nPOINTS "
+            << points.size() << "\nDATA binary\n";
+        for (const Eigen::Vector3d& p : points) {
+          const float xyz[3] = {float(p.x()), float(p.y()), float(p.z())};
+          out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
+        }
+      });
+      Cloud cloud{uniform ? "room sampled uniformly" : "room from one station", {}, 1000.0,
+                  Eigen::Vector3d(0.3, 0.2, 1.0), Eigen::Vector3d(0, -0.5, 1),
+                  Eigen::Vector3d(0, 1, 0), {}};
+      cloud.surfels = sss::cli::load_cloud(pcd.string(), 0, o.memory_cap).cloud;
+      fs::remove(pcd);
+      const sss::SplatRadii radii = sss::assign_splat_radii(cloud.surfels);
+      std::fprintf(stderr, "%s: %zu surfels of %zu points, spacing spread %.1f (%.1f s to make)\n",
+                   cloud.name.c_str(), cloud.surfels.size(), points.size(), radii.spacing_spread,
+                   clock.lap());
+      time_at_scale(o, cloud, material, false, over_budget[uniform], csv);
     }
   }
 }
@@ -584,9 +649,13 @@ int run(Options o) {
     o.frames = std::min(o.frames, 3);
     o.scale_points = {2000, 4000, 8000};
     o.scale_strategies = {"paper", "near-far"};
+    o.room_points = {3000};
     o.size = std::min(o.size, 256);
   }
-  if (!o.settings.empty()) o.scale_points.clear();  // a custom sweep measures only itself
+  if (!o.settings.empty()) {  // a custom sweep measures only itself
+    o.scale_points.clear();
+    o.room_points.clear();
+  }
   fs::create_directories(o.out);
   const fs::path csv_path = o.out / "bench.csv";
   sss::Stopwatch clock;
@@ -595,6 +664,7 @@ int run(Options o) {
   if (!o.scale_only)
     for (const Cloud& cloud : clouds_of(o)) run_sweep(o, cloud, csv);
   run_scale(o, csv);
+  run_rooms(o, csv);
   sss::write_whole_file(csv_path.string(), [&](std::ostream& out) { out << csv.str(); });
   std::fprintf(stderr, "wrote %s (%.0f s)\n", csv_path.string().c_str(), clock.lap());
   const std::string report = std::string("/usr/bin/python3 '") + SSS_BENCH_REPORT + "' '" +

@@ -13,7 +13,7 @@
 namespace sss {
 namespace {
 TEST(IsolatedPoints, RoomScanKeepsItsSurfaceAndLosesItsStrays) {
-  std::vector<Eigen::Vector3d> points = test::room_scan(0.004, 0.003, 7);
+  std::vector<Eigen::Vector3d> points = room_scan(0.004, 0.003, 7);
   const std::size_t surface = points.size();
   // Strays: returns 0.5-1 m off a wall, a bird 1.2 m above the floor, a point in the air
   // between the ceiling and the floor, a pair 1.2 m off the far wall. Isolation is relative
