@@ -545,7 +545,7 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "Last counts (translucent actors, surfels, lit cells, refined cells, virtual points): "
      << this->LastTranslucentActors << " " << this->LastSurfels << " " << this->LastLitCells
-     << " " << this->LastRefinedCells << " " << this->LastVirtualPoints << " (grid level " << this->LastGridLevel << ", spacing "
-     << this->LastGridSpacingMillimetres << " mm)\n";
+     << " " << this->LastRefinedCells << " " << this->LastVirtualPoints << " (grid level "
+     << this->LastGridLevel << ", spacing " << this->LastGridSpacingMillimetres << " mm)\n";
   os << indent << "Linear image: " << this->LinearWidth << " x " << this->LinearHeight << "\n";
 }

@@ -492,7 +492,8 @@ def report(csv_path, out_dir):
     written.append(md)
     for name, figure in (
             ("bench_tradeoff.png", tradeoff_figure([r for r in rows if r["kind"] == "sweep"])),
-            ("bench_scale.png", scale_figure([r for r in rows if r["kind"] == "scale"]))):
+            ("bench_scale.png",
+             scale_figure([r for r in rows if r["kind"] == "scale" and r["is_default"]]))):
         if figure is None:
             print(f"bench_report: no rows for {name}; not written", file=sys.stderr)
             continue
