@@ -135,6 +135,14 @@ std::vector<std::string> split(const std::string& text) {
   return parts;
 }
 
+// A flag's comma-separated point counts; "none": no count.
+std::vector<std::size_t> point_counts(const std::string& flag, const std::string& list) {
+  std::vector<std::size_t> counts;
+  if (list != "none")
+    for (const std::string& n : split(list)) counts.push_back(sss::cli::count(flag, n, 1e9));
+  return counts;
+}
+
 
 // A setting of the pass; unset fields keep the pass's defaults.
 struct Setting {
@@ -217,21 +225,13 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--sweep-mesh") {
       o.scale_mesh = value();
     } else if (flag == "--sweep-points") {
-      o.scale_points.clear();
-      const std::string list = value();
-      if (list != "none")
-        for (const std::string& n : split(list))
-          o.scale_points.push_back(sss::cli::count(flag, n, 1e9));
+      o.scale_points = point_counts(flag, value());
     } else if (flag == "--sweep-strategies") {
       o.scale_strategies = split(value());
       if (o.scale_strategies == std::vector<std::string>{"none"}) o.scale_strategies.clear();
       for (const std::string& text : o.scale_strategies) setting_of(text);
     } else if (flag == "--rooms") {
-      o.room_points.clear();
-      const std::string list = value();
-      if (list != "none")
-        for (const std::string& n : split(list))
-          o.room_points.push_back(sss::cli::count(flag, n, 1e9));
+      o.room_points = point_counts(flag, value());
     } else if (flag == "--sweep-only") {
       o.scale_only = true;
     } else if (flag == "--settings") {
