@@ -68,31 +68,19 @@ void finish_if(bool finish)
   }
 }
 
-void ProgramVAO::bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name,
-  vtkOpenGLBufferObject* buffer2, const char* name2)
+void ProgramVAO::bind_attributes(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer,
+  const char* name, int components, vtkOpenGLBufferObject* buffer2, const char* name2)
 {
   vao->Bind();
   if (needs(p))
   {
     vao->ReleaseGraphicsResources();
     vao->Bind();
-    vao->AddAttributeArray(p, buffer, name, 0, 12, VTK_FLOAT, 3, false);
+    vao->AddAttributeArray(p, buffer, name, 0, 4 * components, VTK_FLOAT, components, false);
     if (buffer2)
     {
       vao->AddAttributeArray(p, buffer2, name2, 0, 8, VTK_FLOAT, 2, false);
     }
-    program = p;
-  }
-}
-
-void ProgramVAO::bind_vec2(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name)
-{
-  vao->Bind();
-  if (needs(p))
-  {
-    vao->ReleaseGraphicsResources();
-    vao->Bind();
-    vao->AddAttributeArray(p, buffer, name, 0, 8, VTK_FLOAT, 2, false);
     program = p;
   }
 }

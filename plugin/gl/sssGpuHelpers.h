@@ -70,10 +70,21 @@ struct ProgramVAO
   // Binds the VAO with one vec3 attribute and, if given, one vec2 attribute, re-linked when
   // the program changed.
   void bind(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name,
-    vtkOpenGLBufferObject* buffer2 = nullptr, const char* name2 = nullptr);
+    vtkOpenGLBufferObject* buffer2 = nullptr, const char* name2 = nullptr)
+  {
+    bind_attributes(p, buffer, name, 3, buffer2, name2);
+  }
   // The same with one vec2 attribute alone.
-  void bind_vec2(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name);
+  void bind_vec2(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name)
+  {
+    bind_attributes(p, buffer, name, 2, nullptr, nullptr);
+  }
   void release();
+
+private:
+  // The first attribute has `components` floats, the second (if given) two.
+  void bind_attributes(vtkShaderProgram* p, vtkOpenGLBufferObject* buffer, const char* name,
+    int components, vtkOpenGLBufferObject* buffer2, const char* name2);
 };
 
 // GL state of the passes that draw one GL point per output texel: no scissor, depth test or

@@ -213,16 +213,20 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
 {
   const int lights = static_cast<int>(maps.maps.size());
   allocate(window, list.width(), list.height(), std::max(lights, 1));
-  const std::string pieces =
+  static const std::string pieces =
     std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table +
     sss_cell_samples;
   static const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs, pieces);
   static const std::string refined_fs = shader_with_pieces(sss_refined_cells_fs, pieces);
+  static const std::string scatter_fs =
+    shader_with_pieces(sss_refined_cells_scatter_fs, sss_surfel_list);
+  vtkShaderProgram* scatter = window->GetShaderCache()->ReadyShaderProgram(
+    sss_refined_cells_scatter_vs, scatter_fs.c_str(), "");
   vtkShaderProgram* irradiance = ready_quad(irradiance_quad_, window, irradiance_fs.c_str());
-  if (!irradiance || !ready_quad(refined_quad_, window, refined_fs.c_str()) ||
+  if (!scatter || !irradiance || !ready_quad(refined_quad_, window, refined_fs.c_str()) ||
     !ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs))
   {
-    error = "the irradiance or pyramid shader did not compile";
+    error = "the irradiance, refined cells' or pyramid shader did not compile";
     return false;
   }
   lights_ = lights;
@@ -268,7 +272,7 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   refined = 0;
   for (int l = 0; l < lights; ++l)
   {
-    refined += refine(window, list, maps, disc_radius, refined_samples, l);
+    refined += refine(window, list, maps, disc_radius, refined_samples, scatter, l);
   }
   fresnel_->Deactivate();
   list.deactivate();
@@ -278,14 +282,15 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
 }
 
 std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& list,
-  const LightMapAtlas& maps, double disc_radius, int refined_samples, int l)
+  const LightMapAtlas& maps, double disc_radius, int refined_samples, vtkShaderProgram* scatter,
+  int l)
 {
   // The marked cells, from E's alpha.
   const Rect& r = levels_[l][0];
   std::vector<float> E(4 * std::size_t(r.width) * std::size_t(r.height));
   fbo_->AddColorAttachment(0, E_);
+  fbo_->ActivateDrawBuffers(1);
   fbo_->ActivateReadBuffer(0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(r.x, r.y, r.width, r.height, GL_RGBA, GL_FLOAT, E.data());
   fbo_->RemoveColorAttachments(1);
   std::vector<float> texels;
@@ -337,14 +342,7 @@ std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& li
   refined_cell_->Deactivate();
 
   // Each back in its texel: E, and the power and weight of the pyramid's finest level.
-  static const std::string scatter_fs =
-    shader_with_pieces(sss_refined_cells_scatter_fs, sss_surfel_list);
-  vtkShaderProgram* scatter = window->GetShaderCache()->ReadyShaderProgram(
-    sss_refined_cells_scatter_vs, scatter_fs.c_str(), "");
-  if (!scatter)
-  {
-    return count;  // the first estimate stays
-  }
+  window->GetShaderCache()->ReadyShaderProgram(scatter);
   texels.resize(2 * count);
   refined_texels_->Upload(texels, vtkOpenGLBufferObject::ArrayBuffer);
   scatter_vao_.bind_vec2(scatter, refined_texels_, "cellTexel");

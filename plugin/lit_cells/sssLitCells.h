@@ -68,10 +68,12 @@ private:
   };
   void allocate(vtkOpenGLRenderWindow* window, int width, int height, int lights);
   // Light l's cells that the first pass marked in E's alpha, lit again with
-  // `refined_samples` points in a block of their own and written back; returns how many. The
-  // light maps, the list and the Fresnel table must be active.
+  // `refined_samples` points in a block of their own and written back by `scatter`
+  // (refined_cells_scatter_vs.glsl); returns how many. The light maps, the list and the
+  // Fresnel table must be active.
   std::size_t refine(vtkOpenGLRenderWindow* window, const SurfelList& list,
-    const LightMapAtlas& maps, double disc_radius, int refined_samples, int l);
+    const LightMapAtlas& maps, double disc_radius, int refined_samples,
+    vtkShaderProgram* scatter, int l);
 
   // Per light atlases: E, and the source pyramid: point, power, normal, then the moments of
   // points, normals and their cross term. The irradiance pass writes the first kCellSources
