@@ -215,8 +215,11 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
   Internals& impl = *this->Impl;
   const sss::StepContext context{ window, SettingsOf(this), this->MeasureStepTimes,
     impl.Pieces };
-  impl.Actors.update(s, context, impl.Lights);
+  impl.Actors.update(s, context, impl.Lights, { this->Refinement, this->RefinementRestSeconds });
   this->LastTranslucentActors = static_cast<int>(impl.Actors.ready().size());
+  this->RefinementPending = impl.Actors.previewing();
+  this->LastPreviewSeconds = impl.Actors.last_preview_seconds();
+  this->LastPreviewError = impl.Actors.preview_error();
 }
 
 void vtkSubsurfacePass::Record(const sss::StepReport& report)
@@ -531,6 +534,8 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CaptureLinearImage: " << this->CaptureLinearImage << "\n";
   os << indent << "QualityPreset: " << this->GetQualityPresetAsString() << "\n";
   os << indent << "MeasureStepTimes: " << this->MeasureStepTimes << "\n";
+  os << indent << "Refinement: " << this->Refinement << " (after " << this->RefinementRestSeconds
+     << " s at rest)\n";
   os << indent << "Runs (bake, illumination, surfels, view): " << this->BakeRuns << " "
      << this->IlluminationRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";
   os << indent << "Last seconds (bake, illumination, surfels, view): " << this->LastBakeSeconds

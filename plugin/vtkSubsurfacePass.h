@@ -204,6 +204,34 @@ public:
   void PrepareFrame(vtkRenderer* renderer);
 
   ///@{
+  /**
+   * Refinement (default off): a frame whose lights, material or geometry changed shows B from
+   * the 2005 paper's method first (its light move costs a few frames of plain points; it is
+   * tens of percent off at the default's scales, docs/benchmark/bench.md), and the first frame
+   * drawn once the inputs have not changed for RefinementRestSeconds (default 0.3) computes B
+   * at the settings above and shows it; frames before it (a camera move, an overlay's update)
+   * show the preview again. An application renders once more when its input rests while
+   * GetRefinementPending() is true. Each method keeps its own bake. Off with pieces: there
+   * every frame is refined.
+   */
+  vtkSetMacro(Refinement, bool);
+  vtkGetMacro(Refinement, bool);
+  vtkBooleanMacro(Refinement, bool);
+  vtkSetClampMacro(RefinementRestSeconds, double, 0.0, 3600.0);
+  vtkGetMacro(RefinementRestSeconds, double);
+  ///@}
+
+  /** Whether the last frame showed a preview that the next unchanged frame refines. */
+  vtkGetMacro(RefinementPending, bool);
+  /** The last preview's steps 1-2 in seconds (0 before the first; exact with MeasureStepTimes). */
+  vtkGetMacro(LastPreviewSeconds, double);
+  /**
+   * The mean relative error (per point, as the benchmark measures it) of the last refined
+   * preview against the B that replaced it: 0.01 is 1 %; negative before the first.
+   */
+  vtkGetMacro(LastPreviewError, double);
+
+  ///@{
   /** Wait for the GPU after each step so the step times below are real (default off). */
   vtkSetMacro(MeasureStepTimes, bool);
   vtkGetMacro(MeasureStepTimes, bool);
@@ -280,6 +308,11 @@ protected:
   double Exposure = 1.0;
   bool CaptureLinearImage = false;
   bool MeasureStepTimes = false;
+  bool Refinement = false;
+  double RefinementRestSeconds = 0.3;
+  bool RefinementPending = false;
+  double LastPreviewSeconds = 0;
+  double LastPreviewError = -1;
 
   int BakeRuns = 0;
   int IlluminationRuns = 0;

@@ -1,6 +1,7 @@
 // sss_view: an interactive, Qt-free PCLVisualizer window showing a cloud translucent.
-// Drag to orbit (PCL's usual mouse and keys); the keys below change the light, the material,
-// the quality and the exposure; a line at the top shows the frame rate and the settings.
+// Drag to orbit (PCL's usual mouse and keys); Ctrl+Shift and a drag turns the light, the keys
+// below change the light, the material, the quality and the exposure; a line at the top shows
+// the frame rate, the settings and whether a preview or the refined image is on screen.
 #include <pcl/point_types.h>
 #include <pcl/visualization/pcl_visualizer.h>
 #include <vtkCallbackCommand.h>
@@ -22,12 +23,16 @@
 #include "material.h"
 #include "procedural_shapes.h"
 #include "renderer_info.h"
+#include "sssPclLightDrag.h"
 #include "sssPclTranslucentCloud.h"
 #include "translucent_scene.h"
 
 namespace {
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
+// With refinement, the input rests once no key or drag came for this long.
+constexpr double kRestSeconds = 0.3;
+constexpr double kNever = 3600.0;
 
 std::string usage() {
   std::ostringstream text;
@@ -49,15 +54,25 @@ options (default in brackets)
                        times that of those neighbours (stray returns, flying pixels) [5]
   --denoise on|off     points onto the surface they measured, sized from the depth noise
                        measured around each, normals from it (sss_render --help) [on]
+  --refine on|off      while the light or the material changes, frames show the 2005 paper's
+                       method (a few plain frames per light move, tens of percent off: the
+                       status line says how far at the last rest), and the quality's B
+                       follows once the input rests for )" << kRestSeconds << R"( s [on]
   --fit surface|all    first frame holds 99 % of the points (surface) or all of them, as
                        PCL's reset (all; the r key resets so) [surface]
   --size WxH           window size in pixels [1024x768]
   --keys STRING        press these keys one per frame after the first (scripted demos)
   --frames N           quit after N frames (0: run until the window is closed) [0]
   --screenshot FILE    save a PNG of the window after the last scripted key (or the first frame)
+  --screenshots PREFIX save a PNG of every frame whose light, material or refinement changed:
+                       PREFIX-00.png (the first frame), PREFIX-01.png, ...
   --help               this text
 
-keys (besides PCL's: drag to orbit, scroll to zoom, r reset camera, j screenshot, q quit)
+mouse (besides PCL's: drag to orbit, scroll to zoom)
+  Ctrl+Shift+drag  turn the light ()" << sss::LightDrag::kDegreesPerPixel
+       << R"( degrees a pixel; the camera stays)
+
+keys (besides PCL's: r reset camera, j screenshot, q quit)
   k / K        rotate the light 15 degrees left / right around the view's up axis
   i / I        raise / lower the light 15 degrees
   m / M        next / previous material
@@ -83,6 +98,8 @@ struct Options {
   std::string keys;
   int frames = 0;
   std::string screenshot;
+  std::string screenshots;
+  bool refine = true;
 };
 
 Options parse(int argc, char** argv) {
@@ -122,6 +139,10 @@ Options parse(int argc, char** argv) {
       o.frames = static_cast<int>(sss::cli::count(flag, value(), 1e6));
     } else if (flag == "--screenshot") {
       o.screenshot = value();
+    } else if (flag == "--screenshots") {
+      o.screenshots = value();
+    } else if (flag == "--refine") {
+      o.refine = sss::cli::on_off(flag, value());
     } else if (!flag.empty() && flag[0] == '-') {
       throw std::invalid_argument(flag + ": unknown option (see --help)");
     } else if (o.input.empty()) {
@@ -188,6 +209,24 @@ struct Viewer {
   std::vector<std::string> materials = sss::Material::preset_names();
   std::size_t material_index = 0;
   bool changed = true;
+  std::chrono::steady_clock::time_point last_input = std::chrono::steady_clock::now();
+
+  void turn(double right_degrees, double up_degrees) {
+    rig.azimuth += right_degrees;
+    rig.elevation = std::clamp(rig.elevation + up_degrees, -90.0, 90.0);
+    lights_changed();
+  }
+
+  void lights_changed() {
+    cloud.setLights({rig.direction()});
+    changed = true;
+    last_input = std::chrono::steady_clock::now();
+  }
+
+  bool resting() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_input).count() >=
+           kRestSeconds;
+  }
 
   void press(const std::string& key) {
     if (key == "k" || key == "K") rig.azimuth += key == "k" ? 15.0 : -15.0;
@@ -212,8 +251,7 @@ struct Viewer {
     } else {
       return;
     }
-    cloud.setLights({rig.direction()});
-    changed = true;
+    lights_changed();
   }
 };
 
@@ -262,7 +300,10 @@ int run(const Options& o) {
   for (std::size_t i = 0; i < viewer.materials.size(); ++i)
     if (viewer.materials[i] == o.material) viewer.material_index = i;
   cloud->setLights({viewer.rig.direction()});
+  cloud->setRefinement(o.refine);
+  cloud->setRefinementRest(kNever);  // the loop below says when the input rests
   pcl_viewer.registerKeyboardCallback(on_key, &viewer);
+  sss::LightDrag drag(pcl_viewer, [&viewer](double right, double up) { viewer.turn(right, up); });
 
   FrameClock clock;
   vtkNew<vtkCallbackCommand> start, end;
@@ -273,39 +314,67 @@ int run(const Options& o) {
   pcl_viewer.getRenderWindow()->AddObserver(vtkCommand::StartEvent, start);
   pcl_viewer.getRenderWindow()->AddObserver(vtkCommand::EndEvent, end);
 
-  std::fprintf(stderr, "first frame (steps 1-2 run now)...\n");
-  pcl_viewer.getRenderWindow()->Render();
-  std::fprintf(stderr, "drawn by %s\n",
-               sss::cli::renderer_info(pcl_viewer.getRenderWindow()).summary().c_str());
-  cloud->autoExpose();
   const auto status = [&] {
     char fps[64];
     std::snprintf(fps, sizeof fps, "%.1f fps (%.0f ms) | ", 1.0 / std::max(clock.last_seconds, 1e-6),
                   1000.0 * clock.last_seconds);
     return fps + cloud->settingsLine() + " | h: keys";
   };
-  pcl_viewer.addText(status(), 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
+  int shots = 0;
+  // Draws a frame, then puts its state in the status line (drawn at once: a render with
+  // unchanged inputs runs no step, a preview's included).
   int shown_frame = -1;
+  const auto draw = [&] {
+    pcl_viewer.getRenderWindow()->Render();
+    const std::string line = status();  // the time of the frame that ran the steps
+    pcl_viewer.updateText(line, 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
+    pcl_viewer.getRenderWindow()->Render();
+    shown_frame = clock.frames;
+    std::fprintf(stderr, "%s\n", line.c_str());
+    if (!o.screenshots.empty()) {
+      char name[32];
+      std::snprintf(name, sizeof name, "-%02d.png", shots++);
+      pcl_viewer.saveScreenshot(o.screenshots + name);
+    }
+  };
+
+  std::fprintf(stderr, "first frame (steps 1-2 run now)...\n");
+  pcl_viewer.addText("", 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
+  pcl_viewer.getRenderWindow()->Render();
+  std::fprintf(stderr, "drawn by %s\n",
+               sss::cli::renderer_info(pcl_viewer.getRenderWindow()).summary().c_str());
+  cloud->autoExpose();
+  draw();
+  viewer.changed = false;
+  bool exposed_refined = !cloud->refinementPending();  // else again once refined
   std::size_t next_key = 0;
   while (!pcl_viewer.wasStopped()) {
-    if (next_key < o.keys.size()) viewer.press(std::string(1, o.keys[next_key++]));
-    if (viewer.changed || clock.frames != shown_frame) {
-      pcl_viewer.updateText(status(), 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
-      shown_frame = clock.frames;
-    }
+    if (next_key < o.keys.size() && !drag.dragging())
+      viewer.press(std::string(1, o.keys[next_key++]));
     if (viewer.changed) {
       viewer.changed = false;
-      pcl_viewer.getRenderWindow()->Render();
-      std::fprintf(stderr, "%s\n", status().c_str());
+      draw();
+    } else if (clock.frames != shown_frame) {  // a camera move: its frame rate
+      pcl_viewer.updateText(status(), 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
+      shown_frame = clock.frames;
+    } else if (cloud->refinementPending() && viewer.resting() && next_key >= o.keys.size()) {
+      std::fprintf(stderr, "refining...\n");
+      cloud->setRefinementRest(0.0);
+      if (!exposed_refined) {
+        cloud->autoExpose();
+        exposed_refined = true;
+      }
+      draw();
+      cloud->setRefinementRest(kNever);
     }
     pcl_viewer.spinOnce(20);
-    if (!o.screenshot.empty() && next_key == o.keys.size()) {
+    if (!o.screenshot.empty() && next_key == o.keys.size() && !cloud->refinementPending()) {
       pcl_viewer.getRenderWindow()->Render();
       pcl_viewer.saveScreenshot(o.screenshot);
       std::fprintf(stderr, "wrote %s\n", o.screenshot.c_str());
       next_key = o.keys.size() + 1;  // once
     }
-    if (o.frames > 0 && clock.frames >= o.frames) break;
+    if (o.frames > 0 && clock.frames >= o.frames && !cloud->refinementPending()) break;
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 #include <vtkRenderStepsPass.h>
 #include <vtk_glew.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -129,6 +130,77 @@ TEST(GpuCaching, CameraOnlyChangeSkipsStepsOneAndTwo) {
   scene.material->SetPreset("ketchup");
   scene.window->Render();
   EXPECT_EQ(scene.pass->GetIlluminationRuns(), 3) << "a material change must re-run steps 1-2";
+}
+
+// The largest difference between two B's, over the points both have, relative to the
+// largest value of the second.
+double largest_difference(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double difference = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    for (int c = 0; c < 3; ++c) {
+      if (std::isnan(a[i][c]) || std::isnan(b[i][c])) continue;
+      difference = std::max(difference, std::abs(a[i][c] - b[i][c]));
+      largest = std::max(largest, std::abs(b[i][c]));
+    }
+  return largest > 0.0 ? difference / largest : difference;
+}
+
+// Refinement: a light change shows the paper's B first (as a pass set to PAPER draws it); a
+// frame drawn before the inputs rested shows it again, the first after shows the settings' B
+// (as a pass without refinement draws it), and the preview's error is the metric's between the
+// two; a light that goes back to the settled one shows the settled B at once.
+TEST(GpuRefinement, PreviewFirstThenTheSettingsBAndTheMeasuredError) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  const Material milk = Material::preset("skimmilk");
+  const std::vector<Light> front{{Eigen::Vector3d(1, 1, 1), 1.0}};
+  const std::vector<Light> side{{Eigen::Vector3d(-1, 1, 0.5), 1.0}};
+  GpuScene refining(sphere, milk, front), paper(sphere, milk, side), settled(sphere, milk, front);
+  refining.pass->RefinementOn();
+  paper.pass->SetKernelStrategyToPaper();
+  const double tolerance = 1e-5;  // the same steps in another context: float rounding only
+
+  refining.pass->SetRefinementRestSeconds(0.0);
+  const std::vector<Rgb> refined_front = settled.render_B();
+  const std::vector<Rgb> first = refining.render_B();
+  EXPECT_TRUE(refining.pass->GetRefinementPending()) << "the first frame is a preview";
+  EXPECT_EQ(refining.pass->GetLastPreviewError(), -1.0) << "no refinement yet";
+  const std::vector<Rgb> second = refining.render_B();
+  EXPECT_FALSE(refining.pass->GetRefinementPending());
+  EXPECT_LT(largest_difference(second, refined_front), tolerance);
+  const double error = compare_radiance(first, second).mean;
+  EXPECT_GT(error, 0.0);
+  EXPECT_NEAR(refining.pass->GetLastPreviewError(), error, 1e-9);
+  std::printf("[ gpu refinement ] sphere, skim milk: preview %.1f %% mean off the settled B\n",
+              100 * error);
+
+  refining.pass->SetRefinementRestSeconds(3600.0);
+  refining.set_lights(side);
+  const std::vector<Rgb> preview_side = refining.render_B();
+  EXPECT_TRUE(refining.pass->GetRefinementPending());
+  EXPECT_LT(largest_difference(preview_side, paper.render_B()), tolerance)
+    << "the preview is the paper's B";
+  EXPECT_GT(refining.pass->GetLastPreviewSeconds(), 0.0);
+  const int illumination_runs = refining.pass->GetIlluminationRuns();
+  refining.renderer->GetActiveCamera()->Azimuth(30);
+  EXPECT_LT(largest_difference(refining.render_B(), preview_side), tolerance)
+    << "a camera move before the rest shows the preview again";
+  EXPECT_TRUE(refining.pass->GetRefinementPending());
+  EXPECT_EQ(refining.pass->GetIlluminationRuns(), illumination_runs) << "and runs no step";
+
+  refining.set_lights(front);
+  EXPECT_LT(largest_difference(refining.render_B(), refined_front), tolerance)
+    << "back to the settled light: its B at once";
+  EXPECT_FALSE(refining.pass->GetRefinementPending());
+
+  refining.set_lights(side);
+  refining.render_B();
+  EXPECT_TRUE(refining.pass->GetRefinementPending());
+  refining.pass->SetRefinementRestSeconds(0.0);
+  refining.render_B();
+  EXPECT_FALSE(refining.pass->GetRefinementPending()) << "rested: refined";
+  EXPECT_EQ(refining.pass->GetIlluminationRuns(), illumination_runs + 1);
 }
 
 // Colours as albedo scale the light entering each point (eq. 15 times the albedo): a uniform

@@ -1,15 +1,18 @@
 // The one-call integration in PCLVisualizer's own (offscreen) window, under the Xvfb server
 // that CTest starts for this test: the same B as the plain VTK path, a lit image, and a handle
-// that changes material, quality, lights and removes the cloud.
+// that changes material, quality, lights and removes the cloud; the light's mouse drag.
 #include <gtest/gtest.h>
 #include <pcl/point_types.h>
 #include <pcl/visualization/pcl_visualizer.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSubsurfacePass.h>
 #include <vtkSurfelMapper.h>
@@ -19,6 +22,7 @@
 
 #include <cmath>
 
+#include "sssPclLightDrag.h"
 #include "sssPclTranslucentCloud.h"
 
 namespace {
@@ -154,3 +158,43 @@ TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
 }
 
 }  // namespace
+
+// Ctrl+Shift and a left drag turns the light by the drag (half a degree a pixel) and leaves the
+// camera where it is; a plain drag turns no light and reaches PCL's interactor, which orbits.
+TEST(PclVisualizer, CtrlShiftDragTurnsTheLightAndNotTheCamera) {
+  pcl::visualization::PCLVisualizer viewer("sss drag test", true);
+  viewer.setSize(200, 200);
+  viewer.addPointCloud<pcl::PointXYZ>(sphere(10, 20).makeShared(), "sphere");
+  viewer.setCameraPosition(0, 0, 60, 0, 0, 0, 0, 1, 0);
+  viewer.getRenderWindow()->Render();
+  double right = 0, up = 0;
+  int turns = 0;
+  sss::LightDrag drag(viewer, [&](double r, double u) { right += r, up += u, ++turns; });
+  vtkRenderWindowInteractor* in = viewer.getRenderWindow()->GetInteractor();
+  vtkCamera* camera = viewer.getRendererCollection()->GetFirstRenderer()->GetActiveCamera();
+  const auto drag_with = [in](int control, int shift) {
+    const int path[3][2] = {{100, 100}, {120, 90}, {140, 110}};
+    in->SetEventInformation(path[0][0], path[0][1], control, shift);
+    in->InvokeEvent(vtkCommand::LeftButtonPressEvent);
+    for (int i = 1; i < 3; ++i) {
+      in->SetEventInformation(path[i][0], path[i][1], control, shift);
+      in->InvokeEvent(vtkCommand::MouseMoveEvent);
+    }
+    in->InvokeEvent(vtkCommand::LeftButtonReleaseEvent);
+  };
+  double before[3], after[3];
+  camera->GetPosition(before);
+  drag_with(1, 1);
+  camera->GetPosition(after);
+  EXPECT_EQ(turns, 2);
+  EXPECT_DOUBLE_EQ(right, 20.0);  // 40 pixels right
+  EXPECT_DOUBLE_EQ(up, 5.0);      // 10 pixels up
+  EXPECT_FALSE(drag.dragging());
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(after[k], before[k]) << "the camera moved";
+  drag_with(0, 0);
+  camera->GetPosition(after);
+  EXPECT_EQ(turns, 2) << "a plain drag turned the light";
+  double moved = 0;
+  for (int k = 0; k < 3; ++k) moved += std::abs(after[k] - before[k]);
+  EXPECT_GT(moved, 1.0) << "a plain drag should orbit the camera";
+}

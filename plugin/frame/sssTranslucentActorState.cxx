@@ -30,6 +30,18 @@ bool agree_over_pieces(vtkSubsurfacePieces* pieces, bool here)
   return not_here == 0.0;
 }
 
+// What a material change is: its coefficients and its scale.
+std::vector<double> material_key(const Material& material)
+{
+  std::vector<double> key;
+  for (int c = 0; c < 3; ++c)
+  {
+    key.insert(key.end(), { material.sigma_a[c], material.sigma_s_prime[c], material.eta[c] });
+  }
+  key.push_back(material.mm_per_unit);
+  return key;
+}
+
 }
 
 
@@ -88,20 +100,26 @@ void TranslucentActorState::release(vtkWindow* window)
   geometry_time_ = 0;
 }
 
+bool TranslucentActorState::geometry_current(
+  const StepContext& context, const ActorInputs& actor) const
+{
+  return valid_ && actor.buffers.upload_time.GetMTime() == geometry_time_ &&
+    material_key(actor.material) == material_key_ && context.settings == geometry_settings_ &&
+    actor.albedo_from_colour == geometry_albedo_;
+}
+
+bool TranslucentActorState::is_current(const StepContext& context, const ActorInputs& actor) const
+{
+  return geometry_current(context, actor) && actor.lights == lights_;
+}
+
 bool TranslucentActorState::update(
   const StepContext& context, const ActorInputs& actor, StepReport& report, std::string& error)
 {
   const Material& material = actor.material;
-  std::vector<double> key;
-  for (int c = 0; c < 3; ++c)
-  {
-    key.insert(key.end(), { material.sigma_a[c], material.sigma_s_prime[c], material.eta[c] });
-  }
-  key.push_back(material.mm_per_unit);
+  const std::vector<double> key = material_key(material);
   const vtkMTimeType surfels_time = actor.buffers.upload_time.GetMTime();
-  const bool geometry_changed = !valid_ || surfels_time != geometry_time_ ||
-    key != material_key_ || !(context.settings == geometry_settings_) ||
-    actor.albedo_from_colour != geometry_albedo_;
+  const bool geometry_changed = !geometry_current(context, actor);
   const bool light_changed =
     agree_over_pieces(context.pieces, geometry_changed || !(actor.lights == lights_));
   report.surfel_count = actor.surfels.cloud.size();

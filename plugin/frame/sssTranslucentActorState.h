@@ -66,6 +66,9 @@ public:
   static void take_part_without_surfels(
     const StepContext& context, const std::vector<GpuLight>& lights);
 
+  // Whether update would run nothing: B is that of these inputs. Not collective.
+  bool is_current(const StepContext& context, const ActorInputs& actor) const;
+
   // The per-surfel B texture (RGBA32F, surfel i at texel (i % width, i / width)).
   vtkTextureObject* surfel_radiance() const;
   int list_width() const;
@@ -82,6 +85,8 @@ public:
 
 private:
   struct Gpu;
+  // Whether the bake is that of these surfels, material and settings.
+  bool geometry_current(const StepContext& context, const ActorInputs& actor) const;
   // The bake: what changes with the geometry, the material or a setting.
   bool bake(const StepContext& context, const ActorInputs& actor, StepReport& report,
     std::string& error);

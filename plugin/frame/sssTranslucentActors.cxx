@@ -10,6 +10,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderState.h"
 
+#include <algorithm>
+
 namespace sss
 {
 
@@ -19,10 +21,13 @@ TranslucentActors::TranslucentActors(Say say, Record record)
 {
 }
 
-void TranslucentActors::update(
-  const vtkRenderState* s, const StepContext& context, const std::vector<GpuLight>& lights)
+void TranslucentActors::update(const vtkRenderState* s, const StepContext& context,
+  const std::vector<GpuLight>& lights, const RefinementRule& rule)
 {
+  RefinementRule here = rule;
+  here.on = rule.on && !context.pieces;
   ready_.clear();
+  previewing_ = false;
   std::set<vtkActor*> seen;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -31,7 +36,7 @@ void TranslucentActors::update(
     {
       continue;
     }
-    if (this->update_actor(actor, context, lights, seen))
+    if (this->update_actor(actor, context, lights, here, seen))
     {
       ready_.insert(actor);
     }
@@ -51,7 +56,7 @@ void TranslucentActors::update(
 }
 
 bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context,
-  const std::vector<GpuLight>& lights, std::set<vtkActor*>& seen)
+  const std::vector<GpuLight>& lights, const RefinementRule& rule, std::set<vtkActor*>& seen)
 {
   vtkTranslucentMaterial* material = vtkTranslucentMaterial::GetFrom(actor);
   auto* mapper = vtkSurfelMapper::SafeDownCast(actor->GetMapper());
@@ -89,7 +94,7 @@ bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context
   auto& state = states_[actor];
   if (!state)
   {
-    state = std::make_unique<TranslucentActorState>();
+    state = std::make_unique<RefiningActorState>();
   }
   std::string error;
   auto precomputed = precomputed_.find(actor);
@@ -101,7 +106,8 @@ bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context
       say_("precomputed radiance needs 3 components per input point", true);
       return false;
     }
-    if (!state->show_radiance(context.window, surfels, core, B, error))
+    TranslucentActorState& given = state->settled_for_given_radiance();
+    if (!given.show_radiance(context.window, surfels, core, B, error))
     {
       say_("precomputed radiance: " + error, true);
       return false;
@@ -110,7 +116,8 @@ bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context
   }
   StepReport report;
   const ActorInputs inputs{ surfels, buffers, core, material->GetColoursAsAlbedo(), local };
-  if (!state->update(context, inputs, report, error))
+  RefiningActorState::Shown shown = RefiningActorState::Shown::Settled;
+  if (!state->update(context, inputs, rule, shown, report, error))
   {
     say_("subsurface scattering is off for an actor: " + error, true);
     return false;
@@ -119,14 +126,32 @@ bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context
   {
     say_(note, false);
   }
-  record_(report);
+  if (shown == RefiningActorState::Shown::Preview)
+  {
+    previewing_ = true;
+    last_preview_seconds_ = report.seconds_illumination + report.seconds_surfels;
+  }
+  else
+  {
+    record_(report);
+  }
   return true;
 }
 
 TranslucentActorState* TranslucentActors::state(vtkActor* actor) const
 {
   auto found = states_.find(actor);
-  return found == states_.end() ? nullptr : found->second.get();
+  return found == states_.end() ? nullptr : &found->second->shown();
+}
+
+double TranslucentActors::preview_error() const
+{
+  double largest = -1.0;
+  for (const auto& entry : states_)
+  {
+    largest = std::max(largest, entry.second->preview_error());
+  }
+  return largest;
 }
 
 void TranslucentActors::set_precomputed(vtkActor* actor, vtkFloatArray* B)

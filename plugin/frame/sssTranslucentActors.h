@@ -1,12 +1,14 @@
 // The translucent actors of a frame in a vtkSubsurfacePass: each visible actor that carries a
 // vtkTranslucentMaterial and draws with a vtkSurfelMapper gets its steps 1-2 brought up to
-// date (sssTranslucentActorState) or the radiance given for it shown; the actors ready for the
-// view are kept, and the states of actors no longer drawn are released.
+// date (sssTranslucentActorState; with refinement first from a coarser method,
+// sssRefiningActorState) or the radiance given for it shown; the actors ready for the view are
+// kept, and the states of actors no longer drawn are released.
 #ifndef sssTranslucentActors_h
 #define sssTranslucentActors_h
 
 #include "quality_settings.h"
 #include "sssLightMaps.h"
+#include "sssRefiningActorState.h"
 #include "sssTranslucentActorState.h"
 
 #include "vtkSmartPointer.h"
@@ -40,17 +42,24 @@ public:
   TranslucentActors(Say say, Record record);
 
   // Steps 1-2 of every translucent actor among the state's props, where their inputs changed,
-  // with the world-frame `lights`. Collective with the context's pieces
-  // (TranslucentActorState::update).
-  void update(
-    const vtkRenderState* s, const StepContext& context, const std::vector<GpuLight>& lights);
+  // with the world-frame `lights`, refined by the rule as RefiningActorState::update does (not
+  // with pieces). Collective with the context's pieces (TranslucentActorState::update).
+  void update(const vtkRenderState* s, const StepContext& context,
+    const std::vector<GpuLight>& lights, const RefinementRule& rule);
+
+  // Whether a ready actor shows a preview that a frame with unchanged inputs will refine.
+  bool previewing() const { return previewing_; }
+  // The last preview's steps 1-2 in seconds (0 before the first).
+  double last_preview_seconds() const { return last_preview_seconds_; }
+  // The largest RefiningActorState::preview_error over the actors (negative: none yet).
+  double preview_error() const;
 
   // The actors whose B is valid this frame; none after clear_ready.
   const std::set<vtkActor*>& ready() const { return ready_; }
   bool is_ready(vtkActor* actor) const { return ready_.count(actor) != 0; }
   void clear_ready() { ready_.clear(); }
 
-  // The actor's state, or null when it has none.
+  // The state whose B the actor shows, or null when it has none.
   TranslucentActorState* state(vtkActor* actor) const;
 
   // B per input point to show for `actor` instead of its steps 1-2; null goes back to them.
@@ -62,11 +71,13 @@ private:
   // Brings one actor up to date; false when it is not ready. Adds it to `seen` once it has
   // surfels and a valid material (the states of the others are released).
   bool update_actor(vtkActor* actor, const StepContext& context,
-    const std::vector<GpuLight>& lights, std::set<vtkActor*>& seen);
+    const std::vector<GpuLight>& lights, const RefinementRule& rule, std::set<vtkActor*>& seen);
 
   Say say_;
   Record record_;
-  std::map<vtkActor*, std::unique_ptr<TranslucentActorState>> states_;
+  std::map<vtkActor*, std::unique_ptr<RefiningActorState>> states_;
+  bool previewing_ = false;
+  double last_preview_seconds_ = 0.0;
   std::set<vtkActor*> ready_;
   std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> precomputed_;
 };

@@ -162,6 +162,20 @@ void TranslucentCloud::setQuality(Quality quality) {
   for (const auto& pass : passes_) pass->SetQualityPreset(qualityName(quality));
 }
 
+void TranslucentCloud::setRefinement(bool on) {
+  for (const auto& pass : passes_) pass->SetRefinement(on);
+}
+
+void TranslucentCloud::setRefinementRest(double seconds) {
+  for (const auto& pass : passes_) pass->SetRefinementRestSeconds(seconds);
+}
+
+bool TranslucentCloud::refinementPending() const {
+  for (const auto& pass : passes_)
+    if (pass->GetRefinementPending()) return true;
+  return false;
+}
+
 void TranslucentCloud::setExposure(double exposure) {
   for (const auto& pass : passes_) pass->SetExposure(exposure);
 }
@@ -208,12 +222,24 @@ std::string TranslucentCloud::settingsLine() const {
   const std::string lights = lights_.empty() ? "headlight"
                              : lights_.size() == 1 ? "1 light"
                                                    : std::to_string(lights_.size()) + " lights";
+  std::string shown;
+  if (p->GetRefinementPending()) {
+    shown = "preview, ";
+    const double error = p->GetLastPreviewError();
+    if (error >= 0.0) {
+      char off[64];
+      std::snprintf(off, sizeof off, "%.0f %% off at the last rest, ", 100.0 * error);
+      shown += off;
+    }
+  } else if (p->GetRefinement()) {
+    shown = "refined, ";
+  }
   char line[256];
   std::snprintf(line, sizeof line,
                 "%s, %g mm/unit, %s, %s, exposure %.3g, light move %.2f s (%s %.2f s)",
                 material_->GetName(), material_->GetMillimetresPerUnit(), qualityName(quality_),
                 lights.c_str(), p->GetExposure(), light_move, largest.second, largest.first);
-  return line;
+  return shown + line;
 }
 
 TranslucentCloud::Ptr addTranslucentSurfels(pcl::visualization::PCLVisualizer& viewer,

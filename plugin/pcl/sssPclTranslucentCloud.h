@@ -67,6 +67,16 @@ class TranslucentCloud {
   void setLights(const std::vector<Eigen::Vector3d>& towards_light, double irradiance = 1.0);
   void setQuality(Quality quality);
   Quality quality() const { return quality_; }
+  // Refinement (vtkSubsurfacePass::SetRefinement; off unless set): a change of the light or
+  // the material is shown first from the 2005 paper's method, and the next frame whose inputs
+  // are unchanged shows the quality's B. refinementPending(): a preview is on screen, so
+  // render once more when the input rests.
+  void setRefinement(bool on);
+  bool refinementPending() const;
+  // The pass's rest before it refines (vtkSubsurfacePass::SetRefinementRestSeconds): an
+  // application that knows when its input rests sets it large and sets it to 0 for the frame
+  // that should refine.
+  void setRefinementRest(double seconds);
   // sRGB(clamp(exposure * Lo)); autoExpose() renders once and sets it so that the 99.5th
   // percentile of the visible translucent pixels' radiance is white.
   void setExposure(double exposure);
@@ -84,7 +94,10 @@ class TranslucentCloud {
   vtkTranslucentMaterial* material() const;
   vtkSubsurfacePass* pass() const;
   // "marble, 1 mm/unit, quality accurate, 2 lights, exposure 3.1, light move 0.41 s (far
-  // 0.30 s)": for overlays; the light move is the last, its largest step in brackets.
+  // 0.30 s)": for overlays; the light move is the last, its largest step in brackets. With
+  // refinement it begins with what is on screen: "preview, 41 % off at the last rest" or
+  // "refined".
+
   std::string settingsLine() const;
 
  private:

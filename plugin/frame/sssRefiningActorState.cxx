@@ -1,0 +1,80 @@
+#include "sssRefiningActorState.h"
+
+#include "error_metric.h"
+
+#include "vtkOpenGLRenderWindow.h"
+
+#include <vector>
+
+namespace sss
+{
+
+QualitySettings RefiningActorState::preview_settings()
+{
+  QualitySettings paper;
+  paper.strategy = KernelStrategy::Paper;
+  return paper;
+}
+
+bool RefiningActorState::update(const StepContext& context, const ActorInputs& actor,
+  const RefinementRule& rule, Shown& shown, StepReport& report, std::string& error)
+{
+  using Clock = std::chrono::steady_clock;
+  shown = Shown::Settled;
+  if (!rule.on || context.settings.strategy == preview_settings().strategy ||
+    settled_.is_current(context, actor))
+  {
+    preview_shown_ = false;
+    return settled_.update(context, actor, report, error);
+  }
+  StepContext coarse = context;
+  coarse.settings = preview_settings();
+  if (!preview_shown_ || !preview_.is_current(coarse, actor))
+  {
+    // The inputs changed since the last frame: the preview follows them, and the rest counts
+    // from when it is ready.
+    if (!preview_.update(coarse, actor, report, error))
+    {
+      return false;
+    }
+    preview_inputs_since_ = Clock::now();
+    preview_shown_ = true;
+    shown = Shown::Preview;
+    return true;
+  }
+  if (std::chrono::duration<double>(Clock::now() - preview_inputs_since_).count() <
+    rule.rest_seconds)
+  {
+    shown = Shown::Preview;  // still moving, as far as we know: the preview stays
+    return true;
+  }
+  // The preview on screen is of these inputs, which have rested: refine.
+  if (!settled_.update(context, actor, report, error))
+  {
+    return false;
+  }
+  preview_shown_ = false;
+  std::vector<Rgb> coarse_B, settled_B;
+  if (preview_.read_surfel_radiance(context.window, coarse_B) &&
+    settled_.read_surfel_radiance(context.window, settled_B) &&
+    coarse_B.size() == settled_B.size())
+  {
+    preview_error_ = compare_radiance(coarse_B, settled_B).mean;
+  }
+  return true;
+}
+
+TranslucentActorState& RefiningActorState::settled_for_given_radiance()
+{
+  preview_shown_ = false;
+  return settled_;
+}
+
+void RefiningActorState::release(vtkWindow* window)
+{
+  settled_.release(window);
+  preview_.release(window);
+  preview_shown_ = false;
+}
+
+}

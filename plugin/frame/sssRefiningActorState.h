@@ -1,0 +1,63 @@
+// One translucent actor of a vtkSubsurfacePass with Refinement on: a change of its lights,
+// material or geometry is shown first from a coarser method (the 2005 paper's: a light move of
+// a few plain frames, tens of percent off), and the pass's own settings' B follows on the first
+// frame drawn once the inputs have rested for a while. Each method keeps its own state and bake
+// (sssTranslucentActorState), so going back and forth re-bakes neither.
+#ifndef sssRefiningActorState_h
+#define sssRefiningActorState_h
+
+#include "sssTranslucentActorState.h"
+
+#include <chrono>
+#include <string>
+
+namespace sss
+{
+
+// When refinement runs: on, the settings' B follows a preview once the inputs have not changed
+// for rest_seconds since the preview was ready.
+struct RefinementRule
+{
+  bool on = false;
+  double rest_seconds = 0.3;
+};
+
+class RefiningActorState
+{
+public:
+  enum class Shown
+  {
+    Settled,  // B at the pass's settings
+    Preview   // B from the coarser method, to be refined
+  };
+
+  // Runs what the inputs call for (above); with the rule off, the settings' steps at once.
+  // `report` is that of the method whose steps ran. False with `error` set when it cannot run.
+  bool update(const StepContext& context, const ActorInputs& actor, const RefinementRule& rule,
+    Shown& shown, StepReport& report, std::string& error);
+
+  // The state whose B is on screen.
+  TranslucentActorState& shown() { return preview_shown_ ? preview_ : settled_; }
+  // The settled state, for B given from outside (TranslucentActorState::show_radiance).
+  TranslucentActorState& settled_for_given_radiance();
+
+  // The mean relative error (error_metric.h) of the last preview against the settled B that
+  // replaced it (0.01 = 1 %); negative before the first refinement.
+  double preview_error() const { return preview_error_; }
+
+  void release(vtkWindow* window);
+
+private:
+  // The coarser method's settings: the paper's, at its defaults.
+  static QualitySettings preview_settings();
+
+  TranslucentActorState settled_;
+  TranslucentActorState preview_;
+  bool preview_shown_ = false;
+  std::chrono::steady_clock::time_point preview_inputs_since_;  // its steps' end for new inputs
+  double preview_error_ = -1.0;
+};
+
+}
+
+#endif
