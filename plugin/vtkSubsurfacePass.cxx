@@ -215,11 +215,13 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
   Internals& impl = *this->Impl;
   const sss::StepContext context{ window, SettingsOf(this), this->MeasureStepTimes,
     impl.Pieces };
-  impl.Actors.update(s, context, impl.Lights, { this->Refinement, this->RefinementRestSeconds });
+  impl.Actors.update(s, context, impl.Lights,
+    { this->Refinement, this->RefinementRestSeconds, this->RefinementFrameSeconds });
   this->LastTranslucentActors = static_cast<int>(impl.Actors.ready().size());
   this->RefinementPending = impl.Actors.previewing();
   this->LastPreviewSeconds = impl.Actors.last_preview_seconds();
   this->LastPreviewError = impl.Actors.preview_error();
+  this->RefinedShare = this->RefinementPending ? impl.Actors.refined_share() : 1.0;
 }
 
 void vtkSubsurfacePass::Record(const sss::StepReport& report)
@@ -535,7 +537,7 @@ void vtkSubsurfacePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "QualityPreset: " << this->GetQualityPresetAsString() << "\n";
   os << indent << "MeasureStepTimes: " << this->MeasureStepTimes << "\n";
   os << indent << "Refinement: " << this->Refinement << " (after " << this->RefinementRestSeconds
-     << " s at rest)\n";
+     << " s at rest, " << this->RefinementFrameSeconds << " s a frame)\n";
   os << indent << "Runs (bake, illumination, surfels, view): " << this->BakeRuns << " "
      << this->IlluminationRuns << " " << this->SurfelRuns << " " << this->ViewRuns << "\n";
   os << indent << "Last seconds (bake, illumination, surfels, view): " << this->LastBakeSeconds

@@ -207,22 +207,28 @@ public:
   /**
    * Refinement (default off): a frame whose lights, material or geometry changed shows B from
    * the 2005 paper's method first (its light move costs a few frames of plain points; it is
-   * tens of percent off at the default's scales, docs/benchmark/bench.md), and the first frame
-   * drawn once the inputs have not changed for RefinementRestSeconds (default 0.3) computes B
-   * at the settings above and shows it; frames before it (a camera move, an overlay's update)
-   * show the preview again. An application renders once more when its input rests while
-   * GetRefinementPending() is true. Each method keeps its own bake. Off with pieces: there
-   * every frame is refined.
+   * tens of percent off at the default's scales, docs/benchmark/bench.md). The frames drawn
+   * once the inputs have not changed for RefinementRestSeconds (default 0.3) compute B at the
+   * settings above, a part each: the light map, the cells and the near field in the first, then
+   * the far field for about RefinementFrameSeconds (default 0.1) a frame (at least one of its
+   * parts), and the last shows it. Until then every frame (a camera move, an overlay's update)
+   * shows the preview. An application keeps rendering while GetRefinementPending() is true and
+   * its input rests. A bake (new geometry, material or settings) still runs whole in one frame.
+   * Each method keeps its own bake. Off with pieces: there every frame is refined.
    */
   vtkSetMacro(Refinement, bool);
   vtkGetMacro(Refinement, bool);
   vtkBooleanMacro(Refinement, bool);
   vtkSetClampMacro(RefinementRestSeconds, double, 0.0, 3600.0);
   vtkGetMacro(RefinementRestSeconds, double);
+  vtkSetClampMacro(RefinementFrameSeconds, double, 0.0, 3600.0);
+  vtkGetMacro(RefinementFrameSeconds, double);
   ///@}
 
-  /** Whether the last frame showed a preview that the next unchanged frame refines. */
+  /** Whether the last frame showed a preview that later frames at rest refine. */
   vtkGetMacro(RefinementPending, bool);
+  /** While pending, the share of the refinement done (0 to 1); 1 otherwise. */
+  vtkGetMacro(RefinedShare, double);
   /** The last preview's steps 1-2 in seconds (0 before the first; exact with MeasureStepTimes). */
   vtkGetMacro(LastPreviewSeconds, double);
   /**
@@ -310,6 +316,8 @@ protected:
   bool MeasureStepTimes = false;
   bool Refinement = false;
   double RefinementRestSeconds = 0.3;
+  double RefinementFrameSeconds = 0.1;
+  double RefinedShare = 1.0;
   bool RefinementPending = false;
   double LastPreviewSeconds = 0;
   double LastPreviewError = -1;

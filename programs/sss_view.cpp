@@ -321,17 +321,16 @@ int run(const Options& o) {
     return fps + cloud->settingsLine() + " | h: keys";
   };
   int shots = 0;
-  // Draws a frame, then puts its state in the status line (drawn at once: a render with
-  // unchanged inputs runs no step, a preview's included).
   int shown_frame = -1;
-  const auto draw = [&] {
-    pcl_viewer.getRenderWindow()->Render();
+  // Puts the frame's state in the status line (drawn at once: a render with unchanged inputs
+  // runs no step, a preview's included), and writes it with --screenshots when asked.
+  const auto show = [&](bool shot) {
     const std::string line = status();  // the time of the frame that ran the steps
     pcl_viewer.updateText(line, 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
     pcl_viewer.getRenderWindow()->Render();
     shown_frame = clock.frames;
     std::fprintf(stderr, "%s\n", line.c_str());
-    if (!o.screenshots.empty()) {
+    if (shot && !o.screenshots.empty()) {
       char name[32];
       std::snprintf(name, sizeof name, "-%02d.png", shots++);
       pcl_viewer.saveScreenshot(o.screenshots + name);
@@ -344,7 +343,7 @@ int run(const Options& o) {
   std::fprintf(stderr, "drawn by %s\n",
                sss::cli::renderer_info(pcl_viewer.getRenderWindow()).summary().c_str());
   cloud->autoExpose();
-  draw();
+  show(true);
   viewer.changed = false;
   bool exposed_refined = !cloud->refinementPending();  // else again once refined
   std::size_t next_key = 0;
@@ -353,19 +352,21 @@ int run(const Options& o) {
       viewer.press(std::string(1, o.keys[next_key++]));
     if (viewer.changed) {
       viewer.changed = false;
-      draw();
+      pcl_viewer.getRenderWindow()->Render();
+      show(true);
     } else if (clock.frames != shown_frame) {  // a camera move: its frame rate
       pcl_viewer.updateText(status(), 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
       shown_frame = clock.frames;
     } else if (cloud->refinementPending() && viewer.resting() && next_key >= o.keys.size()) {
-      std::fprintf(stderr, "refining...\n");
-      cloud->setRefinementRest(0.0);
-      if (!exposed_refined) {
+      cloud->setRefinementRest(0.0);  // this frame takes the next part of the refinement
+      pcl_viewer.getRenderWindow()->Render();
+      cloud->setRefinementRest(kNever);
+      const bool refined = !cloud->refinementPending();
+      if (refined && !exposed_refined) {
         cloud->autoExpose();
         exposed_refined = true;
       }
-      draw();
-      cloud->setRefinementRest(kNever);
+      show(refined);
     }
     pcl_viewer.spinOnce(20);
     if (!o.screenshot.empty() && next_key == o.keys.size() && !cloud->refinementPending()) {

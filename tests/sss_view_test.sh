@@ -20,12 +20,14 @@ fail() { echo "FAIL: $*"; exit 1; }
 grep -q "fps" "$out/sss_view.log" || fail "no status line printed"
 grep -q "marble" "$out/sss_view.log" || fail "status line does not name the material"
 
-# Refinement: the light turn shows a preview, then the refined frame; a PNG of each.
+# Refinement: the first frame and the light turn show previews, then the refined frame follows
+# (after frames that refine in parts); a PNG of each of the three.
 rm -f "$out"/turn-*.png
 "$view" --size 400x300 --keys "k" --frames 4 --screenshots "$out/turn" 2> "$out/turn.log" \
   || { cat "$out/turn.log"; fail "refining session exited with an error"; }
 for n in 00 01 02; do [ -s "$out/turn-$n.png" ] || fail "no frame $n of the light turn"; done
-[ "$(grep -c "| preview, " "$out/turn.log")" = 2 ] || { cat "$out/turn.log"; fail "not two previews"; }
+[ ! -e "$out/turn-03.png" ] || fail "a frame written while refining"
+[ "$(grep -c "| preview, " "$out/turn.log")" -ge 2 ] || { cat "$out/turn.log"; fail "no previews"; }
 tail -n 1 "$out/turn.log" | grep -q "| refined, " \
   || { cat "$out/turn.log"; fail "the last frame is not the refined one"; }
 "$view" --size 400x300 --keys "k" --frames 4 --refine off 2> "$out/plain.log" \

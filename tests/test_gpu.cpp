@@ -203,6 +203,41 @@ TEST(GpuRefinement, PreviewFirstThenTheSettingsBAndTheMeasuredError) {
   EXPECT_EQ(refining.pass->GetIlluminationRuns(), illumination_runs + 1);
 }
 
+// Refinement in parts: with no time a frame, each frame at rest draws one more part of the
+// far field (its walk from one root of the source pyramid), the preview stays on screen until
+// the last, and the B it then shows is the one a pass without refinement computes at once.
+TEST(GpuRefinement, InPartsOverFramesGivesTheSameB) {
+  SurfelCloud sphere = make_sphere(10.0, 0.15);  // about 56,000 points: 4 walk roots
+  sphere.validate();
+  const Material marble = Material::preset("marble");
+  const std::vector<Light> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
+  GpuScene refining(sphere, marble, light), settled(sphere, marble, light);
+  refining.pass->RefinementOn();
+  refining.pass->SetRefinementRestSeconds(0.0);
+  refining.pass->SetRefinementFrameSeconds(0.0);
+  const std::vector<Rgb> preview = refining.render_B();
+  ASSERT_TRUE(refining.pass->GetRefinementPending());
+  EXPECT_EQ(refining.pass->GetRefinedShare(), 0.0);
+  std::vector<double> shares;
+  std::vector<Rgb> B;
+  for (int frame = 0; frame < 64 && refining.pass->GetRefinementPending(); ++frame) {
+    B = refining.render_B();
+    if (refining.pass->GetRefinementPending()) {
+      shares.push_back(refining.pass->GetRefinedShare());
+      EXPECT_LT(largest_difference(B, preview), 1e-6) << "the preview stays until the last part";
+    }
+  }
+  ASSERT_FALSE(refining.pass->GetRefinementPending());
+  ASSERT_GE(shares.size(), 2u) << "the far field was not drawn in parts";
+  for (std::size_t i = 1; i < shares.size(); ++i) EXPECT_GT(shares[i], shares[i - 1]);
+  EXPECT_LT(shares.back(), 1.0);
+  std::printf("[ gpu refinement ] %zu points refined over %zu frames\n", sphere.size(),
+              shares.size() + 1);
+  EXPECT_LT(largest_difference(B, settled.render_B()), 1e-5);
+  EXPECT_EQ(refining.pass->GetIlluminationRuns(), 1);
+  EXPECT_EQ(refining.pass->GetSurfelRuns(), 1);
+}
+
 // Colours as albedo scale the light entering each point (eq. 15 times the albedo): a uniform
 // albedo scales B channel by channel, and a two-tone one matches the CPU reference.
 TEST(GpuAlbedo, ColoursScaleTheLightEnteringEachPoint) {

@@ -2,12 +2,15 @@
 
 #include "sssLitCells.h"
 
+#include "stopwatch.h"
+
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sss
 {
@@ -17,9 +20,30 @@ namespace
 constexpr int kWalkRoot = 7;  // pyramid level whose nodes the far field's quads start from
 }
 
-void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
-  const LitCells& cells, int lights, const FarFieldSettings& settings)
+namespace
 {
+int walk_root_level(const LitCells& cells, int light)
+{
+  return std::min(cells.levels(light) - 1, kWalkRoot);
+}
+}
+
+int far_field_parts(const LitCells& cells, int lights)
+{
+  int parts = 0;
+  for (int l = 0; l < lights; ++l)
+  {
+    const int level = walk_root_level(cells, l);
+    parts += cells.level_width(l, level) * cells.level_height(l, level);
+  }
+  return parts;
+}
+
+void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
+  const LitCells& cells, int lights, const FarFieldSettings& settings,
+  FarFieldProgress& progress, double seconds)
+{
+  Stopwatch clock;
   program->SetUniformf("openingAngle", static_cast<float>(settings.opening_angle));
   program->SetUniformf(
     "maxGroupDiffusionLengths", static_cast<float>(settings.max_group_diffusion_lengths));
@@ -35,18 +59,28 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
   // One quad per light and node of its pyramid's level kWalkRoot (or its top), so that no
   // fragment walks more than (4^(kWalkRoot + 1) - 1) / 3 nodes: llvmpipe stops a shader
   // invocation's loops after 65,535 iterations in all.
+  progress.total = 0;
+  int drawn_here = 0;
   for (int l = 0; l < lights; ++l)
   {
-    const int level = std::min(cells.levels(l) - 1, kWalkRoot);
+    const int level = walk_root_level(cells, l);
+    const int roots = cells.level_width(l, level) * cells.level_height(l, level);
     program->SetUniformi("walkLight", l);
-    for (int y = 0; y < cells.level_height(l, level); ++y)
+    program->SetUniformi("walkRootLevel", level);
+    for (int k = 0; k < roots; ++k, ++progress.total)
     {
-      for (int x = 0; x < cells.level_width(l, level); ++x)
+      if (progress.total < progress.drawn || (drawn_here > 0 && clock.seconds() >= seconds))
       {
-        const int root[2] = { x, y };
-        program->SetUniform2i("walkRoot", root);
-        program->SetUniformi("walkRootLevel", level);
-        quad.Render();
+        continue;  // drawn by an earlier call, or left to a later one
+      }
+      const int root[2] = { k % cells.level_width(l, level), k / cells.level_width(l, level) };
+      program->SetUniform2i("walkRoot", root);
+      quad.Render();
+      ++progress.drawn;
+      ++drawn_here;
+      if (std::isfinite(seconds))
+      {
+        glFinish();
       }
     }
   }

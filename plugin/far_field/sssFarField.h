@@ -28,11 +28,26 @@ struct FarFieldSettings
   double size_bound_reach[3] = {};  // mm per channel: its support at kGroupSizeBoundFraction
 };
 
-// Adds the far field of `lights` lights into the bound target with `program` (a quad over the
-// surfel list that includes far_field.glsl), blending by addition.
-void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
-  const LitCells& cells, int lights, const FarFieldSettings& settings);
+// How far a far field drawn in parts has come: its quads (one per light and walk root) drawn
+// so far, of all.
+struct FarFieldProgress
+{
+  int drawn = 0;
+  int total = 0;
+  bool done() const { return drawn >= total; }
+};
 
+// The quads add_far_field draws for `lights` lights.
+int far_field_parts(const LitCells& cells, int lights);
+
+// Adds the far field of `lights` lights into the bound target with `program` (a quad over the
+// surfel list that includes far_field.glsl), blending by addition: the quads from
+// progress.drawn on, all of them with infinite `seconds`, else the first and then others only
+// while fewer than that many seconds have passed (waiting for the GPU after each quad to know),
+// the rest left to a later call.
+void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
+  const LitCells& cells, int lights, const FarFieldSettings& settings,
+  FarFieldProgress& progress, double seconds);
 }
 
 #endif

@@ -43,6 +43,7 @@ struct NearFarStrategy::Gpu
   SurfelList list;
   LitCells cells;
   NearFieldTable near;
+  FarFieldProgress far_progress;  // of the light move under way
   vtkSmartPointer<vtkTextureObject> B;  // surfel list layout
   vtkNew<vtkOpenGLFramebufferObject> fbo;
   std::unique_ptr<vtkOpenGLQuadHelper> gather_quad;
@@ -131,17 +132,22 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
   const bool finish = context.finish;
   const LightMapAtlas maps = light_maps.atlas();
   Gpu& g = *gpu_;
+  const Stopwatch call;
   Stopwatch clock;
-  if (!g.cells.light(
-        window, g.list, maps, g.cell_radius, g.settings.cell_samples, report.refined_cells, error))
+  if (!context.resume)
   {
-    return false;
+    g.far_progress = FarFieldProgress{};
+    if (!g.cells.light(window, g.list, maps, g.cell_radius, g.settings.cell_samples,
+          report.refined_cells, error))
+    {
+      return false;
+    }
+    finish_if(finish);
+    report.seconds_cells = clock.lap();
+    g.cells.reduce(window, report.lit_cells);
+    finish_if(finish);
+    report.seconds_pyramid = clock.lap();
   }
-  finish_if(finish);
-  report.seconds_cells = clock.lap();
-  g.cells.reduce(window, report.lit_cells);
-  finish_if(finish);
-  report.seconds_pyramid = clock.lap();
 
   // B at every surfel: the near field's table, then the far field's walk.
   static const std::string gather_fs = shader_with_pieces(sss_near_field_fs,
@@ -169,11 +175,14 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
   g.set_dipole(gather, dipole);
   gather->SetUniformi("lightCount", lights);
   state->vtkglViewport(0, 0, g.list.width(), g.list.height());
-  gather->SetUniformi("addNearField", 1);
-  gather->SetUniformi("addFarField", 0);
-  g.gather_quad->Render();
-  finish_if(finish);
-  report.seconds_near = clock.lap();
+  if (!context.resume)
+  {
+    gather->SetUniformi("addNearField", 1);
+    gather->SetUniformi("addFarField", 0);
+    g.gather_quad->Render();
+    finish_if(finish);
+    report.seconds_near = clock.lap();
+  }
   if (g.split.has_far && lights > 0)
   {
     FarFieldSettings far;
@@ -184,7 +193,13 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
     {
       far.size_bound_reach[c] = dipole.channel[c].support_radius(kGroupSizeBoundFraction);
     }
-    add_far_field(state, *g.gather_quad, gather, g.cells, lights, far);
+    // A first part that has used its time leaves the whole far field to the next.
+    g.far_progress.total = far_field_parts(g.cells, lights);
+    if (context.resume || call.seconds() < context.seconds)
+    {
+      add_far_field(state, *g.gather_quad, gather, g.cells, lights, far, g.far_progress,
+        context.seconds - call.seconds());
+    }
   }
   g.cells.deactivate();
   g.near.deactivate();
@@ -193,6 +208,12 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
   state->PopFramebufferBindings();
   finish_if(finish);
   report.seconds_far = clock.lap();
+  if (!g.far_progress.done())
+  {
+    report.unfinished = true;
+    report.done_share = static_cast<double>(g.far_progress.drawn) / g.far_progress.total;
+    return true;
+  }
   const bool handed = resolve.from_list(window, positions, g.list.texel_buffer(), g.B, error);
   finish_if(finish);
   report.seconds_hand_over = clock.lap();

@@ -39,20 +39,29 @@ bool RefiningActorState::update(const StepContext& context, const ActorInputs& a
     }
     preview_inputs_since_ = Clock::now();
     preview_shown_ = true;
+    refined_share_ = 0.0;
     shown = Shown::Preview;
     return true;
   }
+  shown = Shown::Refining;
   if (std::chrono::duration<double>(Clock::now() - preview_inputs_since_).count() <
     rule.rest_seconds)
   {
-    shown = Shown::Preview;  // still moving, as far as we know: the preview stays
-    return true;
+    return true;  // still moving, as far as we know: the preview stays
   }
-  // The preview on screen is of these inputs, which have rested: refine.
-  if (!settled_.update(context, actor, report, error))
+  // The preview on screen is of these inputs, which have rested: refine, a part a frame.
+  StepContext part = context;
+  part.seconds = rule.frame_seconds;
+  if (!settled_.update(part, actor, report, error))
   {
     return false;
   }
+  if (report.unfinished)
+  {
+    refined_share_ = report.done_share;
+    return true;
+  }
+  shown = Shown::Settled;
   preview_shown_ = false;
   std::vector<Rgb> coarse_B, settled_B;
   if (preview_.read_surfel_radiance(context.window, coarse_B) &&

@@ -1,8 +1,9 @@
 // One translucent actor of a vtkSubsurfacePass with Refinement on: a change of its lights,
 // material or geometry is shown first from a coarser method (the 2005 paper's: a light move of
-// a few plain frames, tens of percent off), and the pass's own settings' B follows on the first
-// frame drawn once the inputs have rested for a while. Each method keeps its own state and bake
-// (sssTranslucentActorState), so going back and forth re-bakes neither.
+// a few plain frames, tens of percent off), and the pass's own settings' B is computed over the
+// frames drawn once the inputs have rested for a while, a part of its light move each, and
+// shown when complete. Each method keeps its own state and bake (sssTranslucentActorState), so
+// going back and forth re-bakes neither.
 #ifndef sssRefiningActorState_h
 #define sssRefiningActorState_h
 
@@ -15,11 +16,13 @@ namespace sss
 {
 
 // When refinement runs: on, the settings' B follows a preview once the inputs have not changed
-// for rest_seconds since the preview was ready.
+// for rest_seconds since the preview was ready, over frames of about frame_seconds each (a
+// light move's map, cells and near field run in one frame, its far field in parts).
 struct RefinementRule
 {
   bool on = false;
   double rest_seconds = 0.3;
+  double frame_seconds = 0.1;
 };
 
 class RefiningActorState
@@ -28,7 +31,8 @@ public:
   enum class Shown
   {
     Settled,  // B at the pass's settings
-    Preview   // B from the coarser method, to be refined
+    Preview,  // B from the coarser method, just computed
+    Refining  // the preview again, while the settings' B is under way
   };
 
   // Runs what the inputs call for (above); with the rule off, the settings' steps at once.
@@ -40,6 +44,9 @@ public:
   TranslucentActorState& shown() { return preview_shown_ ? preview_ : settled_; }
   // The settled state, for B given from outside (TranslucentActorState::show_radiance).
   TranslucentActorState& settled_for_given_radiance();
+
+  // While refining, the share of the settled light move done (0 to 1).
+  double refined_share() const { return refined_share_; }
 
   // The mean relative error (error_metric.h) of the last preview against the settled B that
   // replaced it (0.01 = 1 %); negative before the first refinement.
@@ -56,6 +63,7 @@ private:
   bool preview_shown_ = false;
   std::chrono::steady_clock::time_point preview_inputs_since_;  // its steps' end for new inputs
   double preview_error_ = -1.0;
+  double refined_share_ = 0.0;
 };
 
 }

@@ -7,6 +7,7 @@
 #include "quality_settings.h"
 #include "sssLightMaps.h"
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,11 @@ struct StepContext
   QualitySettings settings;
   bool finish = false;
   vtkSubsurfacePieces* pieces = nullptr;
+  // How long one call of Strategy::light may take before it leaves the rest to the next call
+  // (infinite: all of it in one call), and whether this call goes on from the last one's
+  // unfinished work (StepReport::unfinished) for the same light maps.
+  double seconds = std::numeric_limits<double>::infinity();
+  bool resume = false;
 };
 
 // What the steps of one update did and measured.
@@ -51,6 +57,21 @@ struct StepReport
   double texel_mm = 0, grid_spacing_mm = 0;
   double near_reach_mm = 0, far_from_mm = 0;  // near field out to, far field from (0: none)
   std::vector<std::string> notes;             // lights drawn otherwise than asked, and why
+  // Strategy::light stopped at StepContext::seconds with this share of its work done; B is not
+  // handed over yet.
+  bool unfinished = false;
+  double done_share = 1.0;
+
+  // Adds a resumed call's times and its end (unfinished, done_share) to this report.
+  void add_resumed(const StepReport& later)
+  {
+    seconds_surfels += later.seconds_surfels;
+    seconds_near += later.seconds_near;
+    seconds_far += later.seconds_far;
+    seconds_hand_over += later.seconds_hand_over;
+    unfinished = later.unfinished;
+    done_share = later.done_share;
+  }
 };
 
 class Strategy

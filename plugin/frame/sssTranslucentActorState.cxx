@@ -97,20 +97,22 @@ void TranslucentActorState::release(vtkWindow* window)
 {
   gpu_->release(window);
   valid_ = false;
+  baked_ = false;
+  unfinished_ = false;
   geometry_time_ = 0;
 }
 
 bool TranslucentActorState::geometry_current(
   const StepContext& context, const ActorInputs& actor) const
 {
-  return valid_ && actor.buffers.upload_time.GetMTime() == geometry_time_ &&
+  return baked_ && actor.buffers.upload_time.GetMTime() == geometry_time_ &&
     material_key(actor.material) == material_key_ && context.settings == geometry_settings_ &&
     actor.albedo_from_colour == geometry_albedo_;
 }
 
 bool TranslucentActorState::is_current(const StepContext& context, const ActorInputs& actor) const
 {
-  return geometry_current(context, actor) && actor.lights == lights_;
+  return valid_ && geometry_current(context, actor) && actor.lights == lights_;
 }
 
 bool TranslucentActorState::update(
@@ -120,54 +122,74 @@ bool TranslucentActorState::update(
   const std::vector<double> key = material_key(material);
   const vtkMTimeType surfels_time = actor.buffers.upload_time.GetMTime();
   const bool geometry_changed = !geometry_current(context, actor);
-  const bool light_changed =
-    agree_over_pieces(context.pieces, geometry_changed || !(actor.lights == lights_));
+  const bool light_changed = agree_over_pieces(context.pieces,
+    geometry_changed || !(actor.lights == lights_) || (!valid_ && !unfinished_));
   report.surfel_count = actor.surfels.cloud.size();
-  if (!light_changed)
+  if (!light_changed && !unfinished_)
   {
     return true;
   }
-  material_ = material;
-  valid_ = false;
   Gpu& g = *gpu_;
   Stopwatch clock;
-  if (geometry_changed)
+  StepContext step = context;
+  step.resume = !light_changed;  // the same inputs as the unfinished light move: go on with it
+  if (light_changed)
   {
-    if (!bake(context, actor, report, error))
+    material_ = material;
+    valid_ = false;
+    unfinished_ = false;
+    if (geometry_changed)
+    {
+      baked_ = false;
+      if (!bake(context, actor, report, error))
+      {
+        return false;
+      }
+      baked_ = true;
+      material_key_ = key;
+      geometry_time_ = surfels_time;
+      geometry_settings_ = context.settings;
+      geometry_albedo_ = actor.albedo_from_colour;
+      report.bake = true;
+      report.seconds_bake = clock.lap();
+    }
+
+    LightMapReport maps;
+    LightMapRequest request = g.strategy->light_map_request(context.settings);
+    request.pieces = context.pieces;
+    if (!g.maps.render(context.window, actor.buffers, g.local, actor.lights, request, maps, error))
     {
       return false;
     }
-    material_key_ = key;
-    geometry_time_ = surfels_time;
-    geometry_settings_ = context.settings;
-    geometry_albedo_ = actor.albedo_from_colour;
-    report.bake = true;
-    report.seconds_bake = clock.lap();
+    finish_if(context.finish);
+    report.illumination = true;
+    report.seconds_illumination = clock.lap();
+    report.map_width = maps.map_width;
+    report.map_height = maps.map_height;
+    report.texel_mm = maps.texel_mm;
+    report.notes = maps.notes;
+    lights_ = actor.lights;
   }
-
-  LightMapReport maps;
-  LightMapRequest request = g.strategy->light_map_request(context.settings);
-  request.pieces = context.pieces;
-  if (!g.maps.render(context.window, actor.buffers, g.local, actor.lights, request, maps, error))
+  if (!g.strategy->light(step, g.maps, *g.dipole, g.resolve, actor.buffers.positions, report,
+        error))
   {
+    unfinished_ = false;  // the next update starts again
     return false;
   }
   finish_if(context.finish);
-  report.illumination = true;
-  report.seconds_illumination = clock.lap();
-  report.map_width = maps.map_width;
-  report.map_height = maps.map_height;
-  report.texel_mm = maps.texel_mm;
-  report.notes = maps.notes;
-  if (!g.strategy->light(
-        context, g.maps, *g.dipole, g.resolve, actor.buffers.positions, report, error))
-  {
-    return false;
-  }
-  finish_if(context.finish);
-  report.surfels = true;
   report.seconds_surfels = clock.lap();
-  lights_ = actor.lights;
+  if (step.resume)
+  {
+    unfinished_move_.add_resumed(report);
+    report = unfinished_move_;
+  }
+  report.surfels = !report.unfinished;
+  unfinished_ = report.unfinished;
+  if (unfinished_)
+  {
+    unfinished_move_ = report;
+    return true;
+  }
   valid_ = true;
   return true;
 }

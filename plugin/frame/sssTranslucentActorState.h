@@ -54,9 +54,11 @@ public:
   TranslucentActorState(const TranslucentActorState&) = delete;  // owns GPU resources
   TranslucentActorState& operator=(const TranslucentActorState&) = delete;
 
-  // Runs steps 1-2 where their inputs changed. Returns false with `error` set when it cannot
-  // run. With the context's pieces (a cloud split over processes), step 1 runs on every piece
-  // when it must on any, and its maps are combined over them (sssLightMapPieces.h): collective.
+  // Runs steps 1-2 where their inputs changed, or goes on with an unfinished light move (one
+  // that stopped at the context's seconds: report.unfinished) when they did not. Returns false
+  // with `error` set when it cannot run. With the context's pieces (a cloud split over
+  // processes), step 1 runs on every piece when it must on any, and its maps are combined over
+  // them (sssLightMapPieces.h): collective.
   bool update(const StepContext& context, const ActorInputs& actor, StepReport& report,
     std::string& error);
 
@@ -98,7 +100,10 @@ private:
   QualitySettings geometry_settings_;
   bool geometry_albedo_ = false;
   std::vector<GpuLight> lights_;
-  bool valid_ = false;
+  bool baked_ = false;       // the bake is that of geometry_time_, material_key_, ...
+  bool valid_ = false;       // B is that of lights_
+  bool unfinished_ = false;  // the light move to lights_ stopped at its time (StepContext)
+  StepReport unfinished_move_;  // its report so far
 };
 
 }

@@ -28,6 +28,7 @@ void TranslucentActors::update(const vtkRenderState* s, const StepContext& conte
   here.on = rule.on && !context.pieces;
   ready_.clear();
   previewing_ = false;
+  refined_share_ = 1.0;
   std::set<vtkActor*> seen;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -126,14 +127,16 @@ bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context
   {
     say_(note, false);
   }
-  if (shown == RefiningActorState::Shown::Preview)
-  {
-    previewing_ = true;
-    last_preview_seconds_ = report.seconds_illumination + report.seconds_surfels;
-  }
-  else
+  if (shown == RefiningActorState::Shown::Settled)
   {
     record_(report);
+    return true;
+  }
+  previewing_ = true;
+  refined_share_ = std::min(refined_share_, state->refined_share());
+  if (shown == RefiningActorState::Shown::Preview)
+  {
+    last_preview_seconds_ = report.seconds_illumination + report.seconds_surfels;
   }
   return true;
 }

@@ -53,6 +53,8 @@ public:
   double last_preview_seconds() const { return last_preview_seconds_; }
   // The largest RefiningActorState::preview_error over the actors (negative: none yet).
   double preview_error() const;
+  // While previewing, the least share of a settled light move done over the actors (0 to 1).
+  double refined_share() const { return refined_share_; }
 
   // The actors whose B is valid this frame; none after clear_ready.
   const std::set<vtkActor*>& ready() const { return ready_; }
@@ -78,6 +80,7 @@ private:
   std::map<vtkActor*, std::unique_ptr<RefiningActorState>> states_;
   bool previewing_ = false;
   double last_preview_seconds_ = 0.0;
+  double refined_share_ = 1.0;
   std::set<vtkActor*> ready_;
   std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> precomputed_;
 };

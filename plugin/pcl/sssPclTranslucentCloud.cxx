@@ -225,6 +225,8 @@ std::string TranslucentCloud::settingsLine() const {
   std::string shown;
   if (p->GetRefinementPending()) {
     shown = "preview, ";
+    if (p->GetRefinedShare() > 0.0)
+      shown += "refining " + std::to_string(std::lround(100.0 * p->GetRefinedShare())) + " %, ";
     const double error = p->GetLastPreviewError();
     if (error >= 0.0) {
       char off[64];

@@ -68,9 +68,9 @@ class TranslucentCloud {
   void setQuality(Quality quality);
   Quality quality() const { return quality_; }
   // Refinement (vtkSubsurfacePass::SetRefinement; off unless set): a change of the light or
-  // the material is shown first from the 2005 paper's method, and the next frame whose inputs
-  // are unchanged shows the quality's B. refinementPending(): a preview is on screen, so
-  // render once more when the input rests.
+  // the material is shown first from the 2005 paper's method, and the frames drawn once the
+  // input rests compute the quality's B, a part each, and show it. refinementPending(): a
+  // preview is on screen, so keep rendering while the input rests.
   void setRefinement(bool on);
   bool refinementPending() const;
   // The pass's rest before it refines (vtkSubsurfacePass::SetRefinementRestSeconds): an
@@ -95,8 +95,8 @@ class TranslucentCloud {
   vtkSubsurfacePass* pass() const;
   // "marble, 1 mm/unit, quality accurate, 2 lights, exposure 3.1, light move 0.41 s (far
   // 0.30 s)": for overlays; the light move is the last, its largest step in brackets. With
-  // refinement it begins with what is on screen: "preview, 41 % off at the last rest" or
-  // "refined".
+  // refinement it begins with what is on screen: "preview, refining 40 %, 41 % off at the
+  // last rest" or "refined".
 
   std::string settingsLine() const;
 
