@@ -237,11 +237,14 @@ std::string TranslucentCloud::settingsLine() const {
     shown = "refined, ";
   }
   char line[256];
-  std::snprintf(line, sizeof line,
-                "%s, %g mm/unit, %s, %s, exposure %.3g, light move %.2f s (%s %.2f s)",
+  std::snprintf(line, sizeof line, "%s, %g mm/unit, %s, %s, exposure %.3g",
                 material_->GetName(), material_->GetMillimetresPerUnit(), qualityName(quality_),
-                lights.c_str(), p->GetExposure(), light_move, largest.second, largest.first);
-  return shown + line;
+                lights.c_str(), p->GetExposure());
+  char move[96] = "";
+  if (p->GetIlluminationRuns() > 0)  // none before the first settled light move
+    std::snprintf(move, sizeof move, ", light move %.2f s (%s %.2f s)", light_move, largest.second,
+                  largest.first);
+  return shown + line + move;
 }
 
 TranslucentCloud::Ptr addTranslucentSurfels(pcl::visualization::PCLVisualizer& viewer,

@@ -47,6 +47,19 @@ class Wrapping(unittest.TestCase):
         subsurface.SetCellSamples(32)
         self.assertEqual(subsurface.GetQualityPresetAsString(), "")
 
+    def test_refinement_is_reachable_and_off_by_default(self):
+        subsurface = sss.vtkSubsurfacePass()
+        self.assertFalse(subsurface.GetRefinement())
+        subsurface.RefinementOn()
+        subsurface.SetRefinementRestSeconds(0.5)
+        subsurface.SetRefinementFrameSeconds(0.2)
+        self.assertTrue(subsurface.GetRefinement())
+        self.assertAlmostEqual(subsurface.GetRefinementRestSeconds(), 0.5)
+        self.assertAlmostEqual(subsurface.GetRefinementFrameSeconds(), 0.2)
+        self.assertFalse(subsurface.GetRefinementPending())
+        self.assertEqual(subsurface.GetRefinedShare(), 1.0)
+        self.assertLess(subsurface.GetLastPreviewError(), 0.0)
+
 
 if __name__ == "__main__":
     unittest.main()
