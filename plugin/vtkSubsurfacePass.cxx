@@ -219,6 +219,7 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
     { this->Refinement, this->RefinementRestSeconds, this->RefinementFrameSeconds });
   this->LastTranslucentActors = static_cast<int>(impl.Actors.ready().size());
   this->RefinementPending = impl.Actors.previewing();
+  this->RefinementFailed = impl.Actors.unrefined();
   this->LastPreviewSeconds = impl.Actors.last_preview_seconds();
   this->LastPreviewError = impl.Actors.preview_error();
   this->RefinedShare = this->RefinementPending ? impl.Actors.refined_share() : 1.0;

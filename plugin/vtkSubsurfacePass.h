@@ -227,6 +227,11 @@ public:
 
   /** Whether the last frame showed a preview that later frames at rest refine. */
   vtkGetMacro(RefinementPending, bool);
+  /**
+   * Whether the last frame showed a preview whose refinement failed (reported as an error);
+   * it stays, and is not pending, until the inputs change.
+   */
+  vtkGetMacro(RefinementFailed, bool);
   /** While pending, the share of the refinement done (0 to 1); 1 otherwise. */
   vtkGetMacro(RefinedShare, double);
   /** The last preview's steps 1-2 in seconds (0 before the first; exact with MeasureStepTimes). */
@@ -319,6 +324,7 @@ protected:
   double RefinementFrameSeconds = 0.1;
   double RefinedShare = 1.0;
   bool RefinementPending = false;
+  bool RefinementFailed = false;
   double LastPreviewSeconds = 0;
   double LastPreviewError = -1;
 

@@ -64,8 +64,8 @@ options (default in brackets)
   --keys STRING        press these keys one per frame after the first (scripted demos)
   --frames N           quit after N frames (0: run until the window is closed) [0]
   --screenshot FILE    save a PNG of the window after the last scripted key (or the first frame)
-  --screenshots PREFIX save a PNG of every frame whose light, material or refinement changed:
-                       PREFIX-00.png (the first frame), PREFIX-01.png, ...
+  --screenshots PREFIX save a PNG of the first frame, of every frame that a key or a drag
+                       changed and of every refined one: PREFIX-00.png, PREFIX-01.png, ...
   --help               this text
 
 mouse (besides PCL's: drag to orbit, scroll to zoom)
@@ -353,11 +353,14 @@ int run(const Options& o) {
     if (viewer.changed) {
       viewer.changed = false;
       pcl_viewer.getRenderWindow()->Render();
+      viewer.last_input = std::chrono::steady_clock::now();  // the rest counts from the preview
       show(true);
     } else if (clock.frames != shown_frame) {  // a camera move: its frame rate
       pcl_viewer.updateText(status(), 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
       shown_frame = clock.frames;
-    } else if (cloud->refinementPending() && viewer.resting() && next_key >= o.keys.size()) {
+      viewer.last_input = std::chrono::steady_clock::now();  // an orbit is input too
+    } else if (cloud->refinementPending() && viewer.resting() && !drag.dragging() &&
+               next_key >= o.keys.size()) {
       cloud->setRefinementRest(0.0);  // this frame takes the next part of the refinement
       pcl_viewer.getRenderWindow()->Render();
       cloud->setRefinementRest(kNever);

@@ -35,12 +35,22 @@ bool RefiningActorState::update(const StepContext& context, const ActorInputs& a
     // from when it is ready.
     if (!preview_.update(coarse, actor, report, error))
     {
-      return false;
+      // No preview (its grid did not fit, say): the settings' B at once.
+      preview_shown_ = false;
+      report = StepReport{};
+      error.clear();
+      return settled_.update(context, actor, report, error);
     }
     preview_inputs_since_ = Clock::now();
     preview_shown_ = true;
+    settled_failed_ = false;
     refined_share_ = 0.0;
     shown = Shown::Preview;
+    return true;
+  }
+  if (settled_failed_)
+  {
+    shown = Shown::Unrefined;  // until the inputs change
     return true;
   }
   shown = Shown::Refining;
@@ -54,7 +64,9 @@ bool RefiningActorState::update(const StepContext& context, const ActorInputs& a
   part.seconds = rule.frame_seconds;
   if (!settled_.update(part, actor, report, error))
   {
-    return false;
+    settled_failed_ = true;  // not tried again for these inputs; the preview stays
+    shown = Shown::Unrefined;
+    return true;
   }
   if (report.unfinished)
   {

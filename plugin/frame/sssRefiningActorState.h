@@ -32,11 +32,13 @@ public:
   {
     Settled,  // B at the pass's settings
     Preview,  // B from the coarser method, just computed
-    Refining  // the preview again, while the settings' B is under way
+    Refining,  // the preview again, while the settings' B is under way
+    Unrefined  // the preview, the settings' B having failed for these inputs (`error` says why)
   };
 
-  // Runs what the inputs call for (above); with the rule off, the settings' steps at once.
-  // `report` is that of the method whose steps ran. False with `error` set when it cannot run.
+  // Runs what the inputs call for (above); with the rule off, the settings' steps at once, and
+  // so too when the preview fails. `report` is that of the method whose steps ran. False with
+  // `error` set when it cannot run; a failed refinement leaves the preview (Shown::Unrefined).
   bool update(const StepContext& context, const ActorInputs& actor, const RefinementRule& rule,
     Shown& shown, StepReport& report, std::string& error);
 
@@ -61,6 +63,7 @@ private:
   TranslucentActorState settled_;
   TranslucentActorState preview_;
   bool preview_shown_ = false;
+  bool settled_failed_ = false;  // for the preview's inputs
   std::chrono::steady_clock::time_point preview_inputs_since_;  // its steps' end for new inputs
   double preview_error_ = -1.0;
   double refined_share_ = 0.0;

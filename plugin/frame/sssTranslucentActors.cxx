@@ -28,6 +28,7 @@ void TranslucentActors::update(const vtkRenderState* s, const StepContext& conte
   here.on = rule.on && !context.pieces;
   ready_.clear();
   previewing_ = false;
+  unrefined_ = false;
   refined_share_ = 1.0;
   std::set<vtkActor*> seen;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -130,6 +131,15 @@ bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context
   if (shown == RefiningActorState::Shown::Settled)
   {
     record_(report);
+    return true;
+  }
+  if (shown == RefiningActorState::Shown::Unrefined)
+  {
+    if (!error.empty())
+    {
+      say_("the refinement failed; the preview stays until the inputs change: " + error, true);
+    }
+    unrefined_ = true;
     return true;
   }
   previewing_ = true;

@@ -49,6 +49,8 @@ public:
 
   // Whether a ready actor shows a preview that a frame with unchanged inputs will refine.
   bool previewing() const { return previewing_; }
+  // Whether a ready actor shows a preview whose refinement failed (until its inputs change).
+  bool unrefined() const { return unrefined_; }
   // The last preview's steps 1-2 in seconds (0 before the first).
   double last_preview_seconds() const { return last_preview_seconds_; }
   // The largest RefiningActorState::preview_error over the actors (negative: none yet).
@@ -79,6 +81,7 @@ private:
   Record record_;
   std::map<vtkActor*, std::unique_ptr<RefiningActorState>> states_;
   bool previewing_ = false;
+  bool unrefined_ = false;
   double last_preview_seconds_ = 0.0;
   double refined_share_ = 1.0;
   std::set<vtkActor*> ready_;

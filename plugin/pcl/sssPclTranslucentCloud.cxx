@@ -233,6 +233,8 @@ std::string TranslucentCloud::settingsLine() const {
       std::snprintf(off, sizeof off, "%.0f %% off at the last rest, ", 100.0 * error);
       shown += off;
     }
+  } else if (p->GetRefinementFailed()) {
+    shown = "preview, not refined (see the error), ";
   } else if (p->GetRefinement()) {
     shown = "refined, ";
   }
