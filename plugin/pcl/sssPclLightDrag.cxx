@@ -33,8 +33,8 @@ void LightDrag::on_event(vtkObject*, unsigned long event, void* data, void*) {
   int x = 0, y = 0;
   in.GetEventPosition(x, y);
   if (event == vtkCommand::LeftButtonPressEvent) {
-    if (!(in.GetControlKey() && in.GetShiftKey())) return;
-    self.dragging_ = true;
+    self.dragging_ = in.GetControlKey() && in.GetShiftKey();  // a lost release ends here too
+    if (!self.dragging_) return;
   } else if (!self.dragging_) {
     return;
   } else if (event == vtkCommand::MouseMoveEvent) {
