@@ -59,7 +59,8 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
   // One quad per light and node of its pyramid's level kWalkRoot (or its top), so that no
   // fragment walks more than (4^(kWalkRoot + 1) - 1) / 3 nodes: llvmpipe stops a shader
   // invocation's loops after 65,535 iterations in all.
-  progress.total = 0;
+  progress.total = far_field_parts(cells, lights);
+  int part = 0;  // this quad's place among all of them
   int drawn_here = 0;
   for (int l = 0; l < lights; ++l)
   {
@@ -67,9 +68,9 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
     const int roots = cells.level_width(l, level) * cells.level_height(l, level);
     program->SetUniformi("walkLight", l);
     program->SetUniformi("walkRootLevel", level);
-    for (int k = 0; k < roots; ++k, ++progress.total)
+    for (int k = 0; k < roots; ++k, ++part)
     {
-      if (progress.total < progress.drawn || (drawn_here > 0 && clock.seconds() >= seconds))
+      if (part < progress.drawn || (drawn_here > 0 && clock.seconds() >= seconds))
       {
         continue;  // drawn by an earlier call, or left to a later one
       }

@@ -194,11 +194,14 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
       far.size_bound_reach[c] = dipole.channel[c].support_radius(kGroupSizeBoundFraction);
     }
     // A first part that has used its time leaves the whole far field to the next.
-    g.far_progress.total = far_field_parts(g.cells, lights);
     if (context.resume || call.seconds() < context.seconds)
     {
       add_far_field(state, *g.gather_quad, gather, g.cells, lights, far, g.far_progress,
         context.seconds - call.seconds());
+    }
+    else
+    {
+      g.far_progress.total = far_field_parts(g.cells, lights);
     }
   }
   g.cells.deactivate();
