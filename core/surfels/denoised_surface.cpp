@@ -25,12 +25,12 @@ void DenoiseSettings::check() const {
 }
 
 std::string DenoiseReport::summary() const {
-  char text[192];
+  char text[256];
   std::snprintf(text, sizeof text,
                 "noise %.3g (p90 %.3g) at spacing %.3g, fits of %d points (largest %d), "
-                "largest shift %.3g",
+                "largest shift %.3g, %zu beside a crease",
                 median_noise, p90_noise, median_spacing, median_neighbours, largest_neighbours,
-                largest_shift);
+                largest_shift, beside_crease);
   return text;
 }
 
@@ -191,6 +191,76 @@ PatchFit fit_patch(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
   return fit_once(positions, i, candidates, keep, fit.normal, noise_floor, height_noise);
 }
 
+// The crease pass: heights within max(tau, this many nearest-point distances) of a candidate
+// plane count as on it (a clean scan measures no noise).
+constexpr double kCreaseHeightFloor = 0.25;
+// A neighbour whose normal turns more than this from a plane is on another face.
+constexpr double kCreaseAngle = 30.0 * M_PI / 180.0;
+// The plane of a neighbour's normal is taken when its neighbours' biweight support beats that of
+// the point's own normal by this factor.
+constexpr double kCreaseMargin = 1.2;
+// The candidates: the fitted normals of at most this many neighbours spread over the
+// neighbourhood, less those within kCandidateAngle of one already scored (they score alike).
+constexpr int kCreaseCandidates = 32;
+constexpr double kCandidateAngle = 5.0 * M_PI / 180.0;
+
+// Whether normals[j] turns more than kCreaseAngle from normals[i] (a zero normal turns not).
+bool turned(const std::vector<Eigen::Vector3d>& normals, std::size_t i, std::size_t j) {
+  return !normals[i].isZero() && !normals[j].isZero() &&
+         !(std::fabs(normals[j].dot(normals[i])) > std::cos(kCreaseAngle));
+}
+
+// The unit normal of the plane that p = positions[i] lies on beside a crease, among the fitted
+// surfaces (fitted_positions, normals) of up to kCreaseCandidates of `near` and i's own: each
+// scored by how many of `near` a plane through p with its normal holds (within tau, by Tukey's
+// biweight, counting only those whose normal turns less than kCreaseAngle from it, each weighted
+// by exp(-d^2 / scale2) of its distance d, so that p's own face counts most) times the biweight
+// of p's height over that surface. i's own normal unless another's score beats it by
+// kCreaseMargin.
+Eigen::Vector3d crease_plane(const std::vector<Eigen::Vector3d>& positions,
+                             const std::vector<Eigen::Vector3d>& fitted_positions,
+                             const std::vector<Eigen::Vector3d>& normals, std::size_t i,
+                             const std::vector<std::size_t>& near, double tau, double scale2) {
+  const auto biweight = [&](double height) {
+    const double u = height / tau;
+    return std::fabs(u) < 1.0 ? (1.0 - u * u) * (1.0 - u * u) : 0.0;
+  };
+  thread_local std::vector<double> closeness;
+  closeness.clear();
+  for (std::size_t j : near)
+    closeness.push_back(std::exp(-(positions[j] - positions[i]).squaredNorm() / scale2));
+  const auto score = [&](std::size_t from) {
+    const Eigen::Vector3d& c = normals[from];
+    double sum = 0.0;
+    for (std::size_t k = 0; k < near.size(); ++k) {
+      const std::size_t j = near[k];
+      if (std::fabs(normals[j].dot(c)) > std::cos(kCreaseAngle))
+        sum += biweight((positions[j] - positions[i]).dot(c)) * closeness[k];
+    }
+    return sum * biweight((positions[i] - fitted_positions[from]).dot(c));
+  };
+  const double own = score(i);
+  double best = own;
+  std::size_t chosen = i;
+  thread_local std::vector<Eigen::Vector3d> scored;
+  scored.assign(1, normals[i]);
+  const std::size_t stride = std::max<std::size_t>(1, near.size() / kCreaseCandidates);
+  for (std::size_t k = 0; k < near.size(); k += stride) {
+    const Eigen::Vector3d& c = normals[near[k]];
+    if (c.isZero() || std::any_of(scored.begin(), scored.end(), [&](const Eigen::Vector3d& s) {
+          return std::fabs(s.dot(c)) > std::cos(kCandidateAngle);
+        }))
+      continue;
+    scored.push_back(c);
+    const double candidate = score(near[k]);
+    if (candidate > best) {
+      best = candidate;
+      chosen = near[k];
+    }
+  }
+  return best > kCreaseMargin * own ? normals[chosen] : normals[i];
+}
+
 // body(i) for every point, in chunks so that progress is reported from this thread; `offset`
 // and `total` place this pass in the whole.
 template <typename Body>
@@ -243,9 +313,10 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
                                    std::numeric_limits<double>::infinity());
     raw_noise[i] = fit.noise;
     first_normal[i] = fit.normal;
-  }, progress, 0, 2 * n);
+  }, progress, 0, 3 * n);
 
   // Second fit: the noise as the median over the same neighbours, k from it.
+  std::vector<char> may_be_beside_crease(n, 0);
   for_each_point(static_cast<long>(n), [&](std::size_t i) {
     std::vector<std::size_t> near;
     index.nearest(positions[i], k0 + 1, near);
@@ -265,7 +336,56 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
                                    first_normal[i], kTukey * noise, kTukey * noise);
     out.positions[i] = fit.position;
     out.normals[i] = fit.normal;
-  }, progress, n, 2 * n);
+    may_be_beside_crease[i] = std::any_of(near.begin(), near.end(), [&](std::size_t j) {
+      return turned(first_normal, i, j);
+    });
+  }, progress, n, 3 * n);
+
+  // Third pass, over the points some of whose neighbours' first normals turn by over
+  // kCreaseAngle from theirs, in two rounds (the second over those the first found beside a
+  // crease by the fitted normals, now with their neighbours' corrected ones): a point beside a
+  // crease is fitted again over the neighbours on its own face, those whose normal turns less
+  // than kCreaseAngle from the plane that the most of them lie on (crease_plane; its own normal
+  // unless another is clearly better supported).
+  std::vector<char> beside_crease(n, 0);
+  std::vector<std::size_t> points;
+  for (std::size_t i = 0; i < n; ++i)
+    if (may_be_beside_crease[i]) points.push_back(i);
+  for (int round = 0; round < 2; ++round) {
+    const std::vector<Eigen::Vector3d> fitted_normals = out.normals;
+    const std::vector<Eigen::Vector3d> fitted_positions = out.positions;
+    for_each_point(static_cast<long>(points.size()), [&](std::size_t k) {
+      const std::size_t i = points[k];
+      if (fitted_normals[i].isZero()) return;
+      std::vector<std::size_t> near;
+      index.nearest(positions[i], 2 * out.neighbours[i] + 1, near);
+      if (std::none_of(near.begin(), near.end(),
+                       [&](std::size_t j) { return turned(fitted_normals, i, j); }))
+        return;  // no crease within reach
+      beside_crease[i] = 1;
+      const double tau = std::max(kTukey * static_cast<double>(out.noise[i]),
+                                  kCreaseHeightFloor * nearest[i]);
+      const Eigen::Vector3d plane = crease_plane(positions, fitted_positions, fitted_normals, i,
+                                                 near, tau, k0 / (M_PI * density[i]));
+      std::vector<std::size_t> on_face;
+      for (std::size_t j : near)
+        if (std::fabs(fitted_normals[j].dot(plane)) > std::cos(kCreaseAngle))
+          on_face.push_back(j);
+      if (on_face.size() == near.size() || on_face.size() < static_cast<std::size_t>(k0 / 2))
+        return;
+      const PatchFit fit = fit_patch(positions, i, on_face,
+                                     static_cast<std::size_t>(out.neighbours[i]) + 1, plane,
+                                     kTukey * out.noise[i], kTukey * out.noise[i]);
+      if (fit.normal.isZero()) return;
+      out.positions[i] = fit.position;
+      out.normals[i] = fit.normal;
+    }, round == 0 ? progress : Progress{}, 2 * n, 3 * n);
+    points.clear();
+    for (std::size_t i = 0; i < n; ++i)
+      if (beside_crease[i]) points.push_back(i);
+  }
+  if (progress) progress(3 * n, 3 * n);
+  if (report) report->beside_crease = points.size();
 
   if (report) {
     report->points = n;
