@@ -204,10 +204,14 @@ constexpr double kCreaseMargin = 1.2;
 constexpr int kCreaseCandidates = 32;
 constexpr double kCandidateAngle = 5.0 * M_PI / 180.0;
 
+// Whether unit normals a and b (either sign) turn less than kCreaseAngle from each other.
+bool same_face(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::fabs(a.dot(b)) > std::cos(kCreaseAngle);
+}
+
 // Whether normals[j] turns more than kCreaseAngle from normals[i] (a zero normal turns not).
 bool turned(const std::vector<Eigen::Vector3d>& normals, std::size_t i, std::size_t j) {
-  return !normals[i].isZero() && !normals[j].isZero() &&
-         !(std::fabs(normals[j].dot(normals[i])) > std::cos(kCreaseAngle));
+  return !normals[i].isZero() && !normals[j].isZero() && !same_face(normals[i], normals[j]);
 }
 
 // The unit normal of the plane that p = positions[i] lies on beside a crease, among the fitted
@@ -234,7 +238,7 @@ Eigen::Vector3d crease_plane(const std::vector<Eigen::Vector3d>& positions,
     double sum = 0.0;
     for (std::size_t k = 0; k < near.size(); ++k) {
       const std::size_t j = near[k];
-      if (std::fabs(normals[j].dot(c)) > std::cos(kCreaseAngle))
+      if (same_face(normals[j], c))
         sum += biweight((positions[j] - positions[i]).dot(c)) * closeness[k];
     }
     return sum * biweight((positions[i] - fitted_positions[from]).dot(c));
@@ -369,8 +373,7 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
                                                  near, tau, k0 / (M_PI * density[i]));
       std::vector<std::size_t> on_face;
       for (std::size_t j : near)
-        if (std::fabs(fitted_normals[j].dot(plane)) > std::cos(kCreaseAngle))
-          on_face.push_back(j);
+        if (same_face(fitted_normals[j], plane)) on_face.push_back(j);
       if (on_face.size() == near.size() || on_face.size() < static_cast<std::size_t>(k0 / 2))
         return;
       const PatchFit fit = fit_patch(positions, i, on_face,
