@@ -223,6 +223,7 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
   this->LastPreviewSeconds = impl.Actors.last_preview_seconds();
   this->LastPreviewError = impl.Actors.preview_error();
   this->RefinedShare = this->RefinementPending ? impl.Actors.refined_share() : 1.0;
+  this->RefinementPreparing = this->RefinementPending && impl.Actors.preparing();
 }
 
 void vtkSubsurfacePass::Record(const sss::StepReport& report)

@@ -213,8 +213,10 @@ public:
    * the far field for about RefinementFrameSeconds (default 0.1) a frame (at least one of its
    * parts), and the last shows it. Until then every frame (a camera move, an overlay's update)
    * shows the preview. An application keeps rendering while GetRefinementPending() is true and
-   * its input rests. A bake (new geometry, material or settings) still runs whole in one frame.
-   * Each method keeps its own bake. Off with pieces: there every frame is refined.
+   * its input rests. A bake (new geometry, material or settings) runs its CPU part (the cells
+   * and the near-field table's weights, most of its time) on a thread of its own meanwhile, and
+   * its uploads in the first frame that finds it done. Each method keeps its own bake. Off with
+   * pieces: there every frame is refined.
    */
   vtkSetMacro(Refinement, bool);
   vtkGetMacro(Refinement, bool);
@@ -234,6 +236,11 @@ public:
   vtkGetMacro(RefinementFailed, bool);
   /** While pending, the share of the refinement done (0 to 1); 1 otherwise. */
   vtkGetMacro(RefinedShare, double);
+  /**
+   * While pending, whether a bake's CPU part (new geometry, material or settings) still runs on
+   * its thread; the refinement's light move starts once it is done (RefinedShare stays 0).
+   */
+  vtkGetMacro(RefinementPreparing, bool);
   /** The last preview's steps 1-2 in seconds (0 before the first; exact with MeasureStepTimes). */
   vtkGetMacro(LastPreviewSeconds, double);
   /**
@@ -323,6 +330,7 @@ protected:
   double RefinementRestSeconds = 0.3;
   double RefinementFrameSeconds = 0.1;
   double RefinedShare = 1.0;
+  bool RefinementPreparing = false;
   bool RefinementPending = false;
   bool RefinementFailed = false;
   double LastPreviewSeconds = 0;

@@ -9,11 +9,13 @@
 #include <vtk_glew.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <thread>
 
 #include "dipole.h"
 #include "error_metric.h"
@@ -146,10 +148,40 @@ double largest_difference(const std::vector<Rgb>& a, const std::vector<Rgb>& b) 
   return largest > 0.0 ? difference / largest : difference;
 }
 
+// Frames at rest until `scene`'s refinement is done, at most for a minute, each 10 ms after the
+// last (the bake's CPU part runs on a thread of its own meanwhile): the last frame's B, and in
+// `waiting` and `parts` the frames before it that waited for the bake (the share done 0) and
+// those that drew parts of the light move, each showing `preview` (checked).
+std::vector<Rgb> render_until_refined(GpuScene& scene, const std::vector<Rgb>& preview,
+                                      std::vector<double>& parts, int& waiting) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  parts.clear();
+  waiting = 0;
+  std::vector<Rgb> B;
+  while (std::chrono::steady_clock::now() < end) {
+    B = scene.render_B();
+    if (!scene.pass->GetRefinementPending()) return B;
+    EXPECT_LT(largest_difference(B, preview), 1e-6) << "the preview stays until the last part";
+    const double share = scene.pass->GetRefinedShare();
+    if (scene.pass->GetRefinementPreparing()) {
+      EXPECT_EQ(share, 0.0) << "no part of the light move before the bake is done";
+      EXPECT_TRUE(parts.empty()) << "the bake is done before the first part";
+      ++waiting;
+    } else if (share > 0.0) {
+      parts.push_back(share);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ADD_FAILURE() << "not refined within a minute";
+  return B;
+}
+
 // Refinement: a light change shows the paper's B first (as a pass set to PAPER draws it); a
-// frame drawn before the inputs rested shows it again, the first after shows the settings' B
-// (as a pass without refinement draws it), and the preview's error is the metric's between the
-// two; a light that goes back to the settled one shows the settled B at once.
+// frame drawn before the inputs rested shows it again; the frames after show it while the bake
+// runs on its thread, and then the settings' B (as a pass without refinement draws it), the
+// preview's error being the metric's between the two; once baked, a light change rested is
+// refined in the next frame; a light that goes back to the settled one shows the settled B at
+// once.
 TEST(GpuRefinement, PreviewFirstThenTheSettingsBAndTheMeasuredError) {
   SurfelCloud sphere = make_sphere(10.0, 0.5);
   sphere.validate();
@@ -166,9 +198,12 @@ TEST(GpuRefinement, PreviewFirstThenTheSettingsBAndTheMeasuredError) {
   const std::vector<Rgb> first = refining.render_B();
   EXPECT_TRUE(refining.pass->GetRefinementPending()) << "the first frame is a preview";
   EXPECT_EQ(refining.pass->GetLastPreviewError(), -1.0) << "no refinement yet";
-  const std::vector<Rgb> second = refining.render_B();
+  std::vector<double> parts;
+  int waiting = 0;
+  const std::vector<Rgb> second = render_until_refined(refining, first, parts, waiting);
   EXPECT_FALSE(refining.pass->GetRefinementPending());
   EXPECT_LT(largest_difference(second, refined_front), tolerance);
+  EXPECT_GE(waiting, 1) << "the first bake waits for its thread at least once";
   const double error = compare_radiance(first, second).mean;
   EXPECT_GT(error, 0.0);
   EXPECT_NEAR(refining.pass->GetLastPreviewError(), error, 1e-9);
@@ -203,9 +238,10 @@ TEST(GpuRefinement, PreviewFirstThenTheSettingsBAndTheMeasuredError) {
   EXPECT_EQ(refining.pass->GetIlluminationRuns(), illumination_runs + 1);
 }
 
-// Refinement in parts: with no time a frame, each frame at rest draws one more part of the
-// far field (its walk from one root of the source pyramid), the preview stays on screen until
-// the last, and the B it then shows is the one a pass without refinement computes at once.
+// Refinement in parts: with no time a frame, the frames at rest wait for the bake's thread, then
+// each draws one more part of the far field (its walk from one root of the source pyramid), the
+// preview stays on screen until the last, and the B it then shows is the one a pass without
+// refinement computes at once.
 TEST(GpuRefinement, InPartsOverFramesGivesTheSameB) {
   SurfelCloud sphere = make_sphere(10.0, 0.15);  // about 56,000 points: 4 walk roots
   sphere.validate();
@@ -219,23 +255,43 @@ TEST(GpuRefinement, InPartsOverFramesGivesTheSameB) {
   ASSERT_TRUE(refining.pass->GetRefinementPending());
   EXPECT_EQ(refining.pass->GetRefinedShare(), 0.0);
   std::vector<double> shares;
-  std::vector<Rgb> B;
-  for (int frame = 0; frame < 64 && refining.pass->GetRefinementPending(); ++frame) {
-    B = refining.render_B();
-    if (refining.pass->GetRefinementPending()) {
-      shares.push_back(refining.pass->GetRefinedShare());
-      EXPECT_LT(largest_difference(B, preview), 1e-6) << "the preview stays until the last part";
-    }
-  }
+  int waiting = 0;
+  const std::vector<Rgb> B = render_until_refined(refining, preview, shares, waiting);
   ASSERT_FALSE(refining.pass->GetRefinementPending());
+  EXPECT_GE(waiting, 1) << "the bake waits for its thread at least once";
   ASSERT_GE(shares.size(), 2u) << "the far field was not drawn in parts";
   for (std::size_t i = 1; i < shares.size(); ++i) EXPECT_GT(shares[i], shares[i - 1]);
   EXPECT_LT(shares.back(), 1.0);
-  std::printf("[ gpu refinement ] %zu points refined over %zu frames\n", sphere.size(),
-              shares.size() + 1);
+  std::printf("[ gpu refinement ] %zu points refined over %d frames waiting for the bake and %zu "
+              "more\n", sphere.size(), waiting, shares.size() + 1);
   EXPECT_LT(largest_difference(B, settled.render_B()), 1e-5);
   EXPECT_EQ(refining.pass->GetIlluminationRuns(), 1);
   EXPECT_EQ(refining.pass->GetSurfelRuns(), 1);
+  EXPECT_EQ(refining.pass->GetBakeRuns(), 1) << "the bake, whose uploads took a frame of their own";
+  EXPECT_GT(refining.pass->GetLastBakeSeconds(), 0.0);
+}
+
+// Refinement turned off while the bake's CPU part runs on its thread: the next frame waits for
+// it and shows the settled B, as a pass that never refined.
+TEST(GpuRefinement, TurnedOffWhilePreparingShowsTheSettledB) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  const Material marble = Material::preset("marble");
+  const std::vector<Light> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
+  GpuScene refining(sphere, marble, light), settled(sphere, marble, light);
+  refining.pass->RefinementOn();
+  refining.pass->SetRefinementRestSeconds(0.0);
+  refining.render_B();  // the preview
+  refining.render_B();  // at rest: the bake starts on its thread
+  ASSERT_TRUE(refining.pass->GetRefinementPending());
+  ASSERT_TRUE(refining.pass->GetRefinementPreparing());
+  EXPECT_EQ(refining.pass->GetRefinedShare(), 0.0);
+  refining.pass->RefinementOff();
+  const std::vector<Rgb> B = refining.render_B();
+  EXPECT_FALSE(refining.pass->GetRefinementPending());
+  EXPECT_FALSE(refining.pass->GetRefinementPreparing());
+  EXPECT_LT(largest_difference(B, settled.render_B()), 1e-5);
+  EXPECT_EQ(refining.pass->GetBakeRuns(), 1) << "the settled bake, once (a preview is not counted)";
 }
 
 // Colours as albedo scale the light entering each point (eq. 15 times the albedo): a uniform

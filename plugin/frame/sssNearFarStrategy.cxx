@@ -32,6 +32,14 @@
 namespace sss
 {
 
+// What the bake computes on the CPU (NearFarStrategy::prepare).
+struct NearFarStrategy::Preparation : BakePreparation
+{
+  NearFarSplit split;
+  SurfelCells cells;
+  NearFieldWeights weights;
+};
+
 struct NearFarStrategy::Gpu
 {
   Material material;
@@ -44,6 +52,7 @@ struct NearFarStrategy::Gpu
   LitCells cells;
   NearFieldTable near;
   FarFieldProgress far_progress;  // of the light move under way
+  std::unique_ptr<Preparation> prepared;  // adopted for the next bake
   vtkSmartPointer<vtkTextureObject> B;  // surfel list layout
   vtkNew<vtkOpenGLFramebufferObject> fbo;
   std::unique_ptr<vtkOpenGLQuadHelper> gather_quad;
@@ -87,6 +96,33 @@ void NearFarStrategy::release(vtkWindow* window)
   gpu_->release(window);
 }
 
+std::unique_ptr<NearFarStrategy::Preparation> NearFarStrategy::prepare(
+  const LocalSurfels& local, const Dipole& dipole)
+{
+  auto prepared = std::make_unique<Preparation>();
+  prepared->split = NearFarSplit::choose(
+    dipole, local.cell_radius > 0.0 ? local.cell_radius : 1.0, kKernelSupportFraction);
+  const SurfelIndex index(local.positions);
+  prepared->cells = surfel_cells(local, index);
+  prepared->weights =
+    near_field_weights(local, prepared->cells, index, dipole, prepared->split.reach);
+  return prepared;
+}
+
+BakeWork NearFarStrategy::bake_work(const LocalSurfels& local, const Dipole& dipole) const
+{
+  return [local, dipole]() -> std::unique_ptr<BakePreparation> { return prepare(local, dipole); };
+}
+
+void NearFarStrategy::adopt(std::unique_ptr<BakePreparation> prepared)
+{
+  gpu_->prepared.reset(dynamic_cast<Preparation*>(prepared.get()));
+  if (gpu_->prepared)
+  {
+    prepared.release();
+  }
+}
+
 bool NearFarStrategy::bake(const StepContext& context, const LocalSurfels& local,
   const Material& material, const Dipole& dipole, StepReport& report, std::string& error)
 {
@@ -96,26 +132,25 @@ bool NearFarStrategy::bake(const StepContext& context, const LocalSurfels& local
   g.settings = context.settings;
   g.cell_radius = local.cell_radius;
   g.support = dipole.max_support_radius(kKernelSupportFraction);
-  g.split = NearFarSplit::choose(
-    dipole, local.cell_radius > 0.0 ? local.cell_radius : 1.0, kKernelSupportFraction);
-  SurfelCells cells;
-  NearFieldWeights weights;
-  try
+  std::unique_ptr<Preparation> prepared = std::move(g.prepared);
+  if (!prepared)
   {
-    const SurfelIndex index(local.positions);
-    cells = surfel_cells(local, index);
-    weights = near_field_weights(local, cells, index, dipole, g.split.reach);
+    try
+    {
+      prepared = prepare(local, dipole);
+    }
+    catch (const std::exception& e)
+    {
+      error = e.what();
+      return false;
+    }
   }
-  catch (const std::exception& e)
-  {
-    error = e.what();
-    return false;
-  }
+  g.split = prepared->split;
   report.near_reach_mm = g.split.reach;
   report.far_from_mm = g.split.has_far ? g.split.reach : 0.0;
-  report.near_entries = weights.source.size();
-  if (!g.list.upload(window, local, cells, error) ||
-    !g.near.upload(window, g.list, weights, error))
+  report.near_entries = prepared->weights.source.size();
+  if (!g.list.upload(window, local, prepared->cells, error) ||
+    !g.near.upload(window, g.list, prepared->weights, error))
   {
     return false;
   }

@@ -45,6 +45,9 @@ public:
   // The CPU bake (cells, the near-field table, the surfel list) and its uploads.
   bool bake(const StepContext& context, const LocalSurfels& local, const Material& material,
     const Dipole& dipole, StepReport& report, std::string& error) override;
+  // The cells and the near-field table's weights (most of the bake's time).
+  BakeWork bake_work(const LocalSurfels& local, const Dipole& dipole) const override;
+  void adopt(std::unique_ptr<BakePreparation> prepared) override;
   // Maps of the surfel each texel sees, texels TexelPerRadius of a disc radius.
   LightMapRequest light_map_request(const QualitySettings& settings) const override;
   // Irradiance, source pyramids and B at every surfel for the given light maps, handed to
@@ -56,6 +59,9 @@ public:
 
 private:
   struct Gpu;
+  struct Preparation;
+  // bake_work's work. Throws std::exception.
+  static std::unique_ptr<Preparation> prepare(const LocalSurfels& local, const Dipole& dipole);
   std::unique_ptr<Gpu> gpu_;
 };
 

@@ -49,6 +49,8 @@ public:
 
   // While refining, the share of the settled light move done (0 to 1).
   double refined_share() const { return refined_share_; }
+  // While refining, whether the settled bake's CPU part still runs on its thread.
+  bool preparing() const { return preview_shown_ && settled_.preparing(); }
 
   // The mean relative error (error_metric.h) of the last preview against the settled B that
   // replaced it (0.01 = 1 %); negative before the first refinement.

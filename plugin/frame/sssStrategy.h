@@ -7,6 +7,7 @@
 #include "quality_settings.h"
 #include "sssLightMaps.h"
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -74,13 +75,31 @@ struct StepReport
   }
 };
 
+// What a strategy's bake computes on the CPU alone (Strategy::bake_work).
+class BakePreparation
+{
+public:
+  virtual ~BakePreparation() = default;
+};
+// Work that owns copies of its inputs and touches no GL: it may run on another thread. It
+// throws std::exception when it cannot be done.
+using BakeWork = std::function<std::unique_ptr<BakePreparation>()>;
+
 class Strategy
 {
 public:
   virtual ~Strategy() = default;
-  // `local` carries its surface fit and its albedo (none for white).
+  // `local` carries its surface fit and its albedo (none for white). With a preparation
+  // adopted for these inputs, only what remains.
   virtual bool bake(const StepContext& context, const LocalSurfels& local,
     const Material& material, const Dipole& dipole, StepReport& report, std::string& error) = 0;
+  // The CPU part of bake for `local` and `dipole` as work of its own, or none where the
+  // strategy's bake has no such part worth a thread; its result goes to adopt() before bake().
+  virtual BakeWork bake_work(const LocalSurfels& /*local*/, const Dipole& /*dipole*/) const
+  {
+    return {};
+  }
+  virtual void adopt(std::unique_ptr<BakePreparation> /*prepared*/) {}
   // What the light maps must hold for it (after its bake).
   virtual LightMapRequest light_map_request(const QualitySettings& settings) const = 0;
   // B for the maps just drawn, handed to `resolve` at the surfels' `positions`

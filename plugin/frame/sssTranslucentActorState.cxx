@@ -11,6 +11,7 @@
 #include "vtkSubsurfacePieces.h"
 #include "vtkTextureObject.h"
 
+#include <cmath>
 #include <memory>
 
 namespace sss
@@ -99,15 +100,22 @@ void TranslucentActorState::release(vtkWindow* window)
   valid_ = false;
   baked_ = false;
   unfinished_ = false;
-  geometry_time_ = 0;
+  baked_inputs_ = BakeInputs{};
+  background_.drop();
+}
+
+TranslucentActorState::BakeInputs TranslucentActorState::bake_inputs(
+  const StepContext& context, const ActorInputs& actor)
+{
+  return { actor.buffers.upload_time.GetMTime(), material_key(actor.material), context.settings,
+    actor.albedo_from_colour };
 }
 
 bool TranslucentActorState::geometry_current(
   const StepContext& context, const ActorInputs& actor) const
 {
-  return baked_ && actor.buffers.upload_time.GetMTime() == geometry_time_ &&
-    material_key(actor.material) == material_key_ && context.settings == geometry_settings_ &&
-    actor.albedo_from_colour == geometry_albedo_;
+  return baked_ && baked_inputs_.geometry_time != 0 &&
+    bake_inputs(context, actor) == baked_inputs_;
 }
 
 bool TranslucentActorState::is_current(const StepContext& context, const ActorInputs& actor) const
@@ -119,11 +127,14 @@ bool TranslucentActorState::update(
   const StepContext& context, const ActorInputs& actor, StepReport& report, std::string& error)
 {
   const Material& material = actor.material;
-  const std::vector<double> key = material_key(material);
-  const vtkMTimeType surfels_time = actor.buffers.upload_time.GetMTime();
   const bool geometry_changed = !geometry_current(context, actor);
   const bool light_changed = agree_over_pieces(context.pieces,
     geometry_changed || !(actor.lights == lights_) || (!valid_ && !unfinished_));
+  if (light_changed && !geometry_changed && bake_report_)
+  {
+    report = *bake_report_;  // the bake that ended the last frame is this light move's
+  }
+  bake_report_.reset();
   report.surfel_count = actor.surfels.cloud.size();
   if (!light_changed && !unfinished_)
   {
@@ -141,17 +152,29 @@ bool TranslucentActorState::update(
     if (geometry_changed)
     {
       baked_ = false;
-      if (!bake(context, actor, report, error))
+      BakeProgress progress = BakeProgress::Done;
+      if (!bake(context, actor, report, progress, error))
       {
         return false;
       }
-      baked_ = true;
-      material_key_ = key;
-      geometry_time_ = surfels_time;
-      geometry_settings_ = context.settings;
-      geometry_albedo_ = actor.albedo_from_colour;
-      report.bake = true;
-      report.seconds_bake = clock.lap();
+      if (progress != BakeProgress::Waiting)
+      {
+        baked_ = true;
+        baked_inputs_ = bake_inputs(context, actor);
+        report.bake = true;
+        report.seconds_bake = clock.lap();
+      }
+      if (progress != BakeProgress::Done)
+      {
+        // Waiting, or the uploads took this frame: the light move starts in the next.
+        if (progress == BakeProgress::DoneFromBackground)
+        {
+          bake_report_ = report;
+        }
+        report.unfinished = true;
+        report.done_share = 0.0;
+        return true;
+      }
     }
 
     LightMapReport maps;
@@ -194,8 +217,55 @@ bool TranslucentActorState::update(
   return true;
 }
 
-bool TranslucentActorState::bake(
-  const StepContext& context, const ActorInputs& actor, StepReport& report, std::string& error)
+bool TranslucentActorState::bake(const StepContext& context, const ActorInputs& actor,
+  StepReport& report, BakeProgress& progress, std::string& error)
+{
+  Gpu& g = *gpu_;
+  progress = BakeProgress::Done;
+  const BakeInputs inputs = bake_inputs(context, actor);
+  if (background_.running() && background_inputs_ == inputs)
+  {
+    if (!std::isfinite(context.seconds))
+    {
+      background_.wait();  // a frame that must show the settled B
+    }
+    else if (!background_.finished())
+    {
+      progress = BakeProgress::Waiting;
+      return true;
+    }
+    std::unique_ptr<BakePreparation> prepared = background_.take(error);
+    if (!prepared)
+    {
+      return false;
+    }
+    g.strategy->adopt(std::move(prepared));
+    if (std::isfinite(context.seconds))
+    {
+      progress = BakeProgress::DoneFromBackground;
+    }
+    return g.strategy->bake(context, g.local, material_, *g.dipole, report, error);
+  }
+  background_.drop();  // of other inputs
+  if (!begin_bake(context, actor, error))
+  {
+    return false;
+  }
+  if (std::isfinite(context.seconds))
+  {
+    if (BakeWork work = g.strategy->bake_work(g.local, *g.dipole))
+    {
+      background_.start(std::move(work));
+      background_inputs_ = inputs;
+      progress = BakeProgress::Waiting;
+      return true;
+    }
+  }
+  return g.strategy->bake(context, g.local, material_, *g.dipole, report, error);
+}
+
+bool TranslucentActorState::begin_bake(
+  const StepContext& context, const ActorInputs& actor, std::string& error)
 {
   Gpu& g = *gpu_;
   g.local = LocalSurfels::from(actor.surfels.cloud, material_.mm_per_unit);
@@ -232,7 +302,7 @@ bool TranslucentActorState::bake(
       }
     }
   }
-  return g.strategy->bake(context, g.local, material_, *g.dipole, report, error);
+  return true;
 }
 
 bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,
@@ -248,8 +318,7 @@ bool TranslucentActorState::show_radiance(vtkOpenGLRenderWindow* window,
   material_ = material;
   gpu_->resolve.set(window, B);
   valid_ = true;
-  geometry_time_ = 0;  // the next update() runs every step
-  material_key_.clear();
+  baked_inputs_ = BakeInputs{};  // the next update() runs every step
   return true;
 }
 

@@ -8,6 +8,7 @@
 #include "dipole.h"
 #include "material.h"
 #include "quality_settings.h"
+#include "sssBackgroundBake.h"
 #include "sssLightMaps.h"
 #include "sssKernelStrategies.h"
 #include "sssSurfelBuffers.h"
@@ -19,6 +20,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,7 +57,10 @@ public:
   TranslucentActorState& operator=(const TranslucentActorState&) = delete;
 
   // Runs steps 1-2 where their inputs changed, or goes on with an unfinished light move (one
-  // that stopped at the context's seconds: report.unfinished) when they did not. Returns false
+  // that stopped at the context's seconds: report.unfinished) when they did not. With finite
+  // seconds a bake's CPU part (Strategy::bake_work) runs on a thread of its own: the calls until
+  // it is done return at once, unfinished with nothing done, and the one that finds it done
+  // makes the bake's uploads and returns so too; the light move starts in the next. Returns false
   // with `error` set when it cannot run. With the context's pieces (a cloud split over
   // processes), step 1 runs on every piece when it must on any, and its maps are combined over
   // them (sssLightMapPieces.h): collective.
@@ -70,6 +75,8 @@ public:
 
   // Whether update would run nothing: B is that of these inputs. Not collective.
   bool is_current(const StepContext& context, const ActorInputs& actor) const;
+  // Whether a bake's CPU part runs on its thread (update() returns unfinished meanwhile).
+  bool preparing() const { return background_.running(); }
 
   // The per-surfel B texture (RGBA32F, surfel i at texel (i % width, i / width)).
   vtkTextureObject* surfel_radiance() const;
@@ -87,23 +94,50 @@ public:
 
 private:
   struct Gpu;
+  // What a bake is of: the surfels' upload, the material, the settings and the albedo.
+  struct BakeInputs
+  {
+    vtkMTimeType geometry_time = 0;
+    std::vector<double> material_key;
+    QualitySettings settings;
+    bool albedo = false;
+    bool operator==(const BakeInputs& other) const
+    {
+      return geometry_time == other.geometry_time && material_key == other.material_key &&
+        settings == other.settings && albedo == other.albedo;
+    }
+  };
+  static BakeInputs bake_inputs(const StepContext& context, const ActorInputs& actor);
   // Whether the bake is that of these surfels, material and settings.
   bool geometry_current(const StepContext& context, const ActorInputs& actor) const;
+  // How far bake() got: done in this call, its CPU part still on background_ (finite
+  // seconds), or done now from that part (the frame that took it ends there).
+  enum class BakeProgress
+  {
+    Done,
+    Waiting,
+    DoneFromBackground
+  };
   // The bake: what changes with the geometry, the material or a setting.
   bool bake(const StepContext& context, const ActorInputs& actor, StepReport& report,
-    std::string& error);
+    BakeProgress& progress, std::string& error);
+  // What bake() does before the strategy's own bake: the local surfels, the dipole, the
+  // strategy for the settings.
+  bool begin_bake(const StepContext& context, const ActorInputs& actor, std::string& error);
 
   std::unique_ptr<Gpu> gpu_;
   Material material_;
-  std::vector<double> material_key_;
-  vtkMTimeType geometry_time_ = 0;  // the buffers' upload
-  QualitySettings geometry_settings_;
-  bool geometry_albedo_ = false;
+  BakeInputs baked_inputs_;  // geometry_time 0: every step runs at the next update
+  BackgroundBake background_;
+  BakeInputs background_inputs_;  // of background_'s run
   std::vector<GpuLight> lights_;
-  bool baked_ = false;       // the bake is that of geometry_time_, material_key_, ...
+  bool baked_ = false;       // the bake is that of baked_inputs_
   bool valid_ = false;       // B is that of lights_
   bool unfinished_ = false;  // the light move to lights_ stopped at its time (StepContext)
   StepReport unfinished_move_;  // its report so far
+  // A bake that ended its frame (BakeProgress::DoneFromBackground): the report the next light
+  // move starts from.
+  std::optional<StepReport> bake_report_;
 };
 
 }

@@ -30,6 +30,7 @@ void TranslucentActors::update(const vtkRenderState* s, const StepContext& conte
   previewing_ = false;
   unrefined_ = false;
   refined_share_ = 1.0;
+  preparing_ = false;
   std::set<vtkActor*> seen;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -144,6 +145,7 @@ bool TranslucentActors::update_actor(vtkActor* actor, const StepContext& context
   }
   previewing_ = true;
   refined_share_ = std::min(refined_share_, state->refined_share());
+  preparing_ = preparing_ || state->preparing();
   if (shown == RefiningActorState::Shown::Preview)
   {
     last_preview_seconds_ = report.seconds_illumination + report.seconds_surfels;

@@ -57,6 +57,8 @@ public:
   double preview_error() const;
   // While previewing, the least share of a settled light move done over the actors (0 to 1).
   double refined_share() const { return refined_share_; }
+  // Whether a refining actor's bake still runs its CPU part on a thread.
+  bool preparing() const { return preparing_; }
 
   // The actors whose B is valid this frame; none after clear_ready.
   const std::set<vtkActor*>& ready() const { return ready_; }
@@ -84,6 +86,7 @@ private:
   bool unrefined_ = false;
   double last_preview_seconds_ = 0.0;
   double refined_share_ = 1.0;
+  bool preparing_ = false;
   std::set<vtkActor*> ready_;
   std::map<vtkActor*, vtkSmartPointer<vtkFloatArray>> precomputed_;
 };

@@ -176,6 +176,12 @@ bool TranslucentCloud::refinementPending() const {
   return false;
 }
 
+bool TranslucentCloud::refinementPreparing() const {
+  for (const auto& pass : passes_)
+    if (pass->GetRefinementPreparing()) return true;
+  return false;
+}
+
 void TranslucentCloud::setExposure(double exposure) {
   for (const auto& pass : passes_) pass->SetExposure(exposure);
 }
@@ -225,7 +231,9 @@ std::string TranslucentCloud::settingsLine() const {
   std::string shown;
   if (p->GetRefinementPending()) {
     shown = "preview, ";
-    if (p->GetRefinedShare() > 0.0)
+    if (p->GetRefinementPreparing())
+      shown += "preparing the bake, ";
+    else if (p->GetRefinedShare() > 0.0)
       shown += "refining " + std::to_string(std::lround(100.0 * p->GetRefinedShare())) + " %, ";
     const double error = p->GetLastPreviewError();
     if (error >= 0.0) {

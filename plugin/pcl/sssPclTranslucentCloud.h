@@ -70,9 +70,12 @@ class TranslucentCloud {
   // Refinement (vtkSubsurfacePass::SetRefinement; off unless set): a change of the light or
   // the material is shown first from the 2005 paper's method, and the frames drawn once the
   // input rests compute the quality's B, a part each, and show it. refinementPending(): a
-  // preview is on screen, so keep rendering while the input rests.
+  // preview is on screen, so keep rendering while the input rests. refinementPreparing(): the
+  // bake's CPU part runs on a thread meanwhile (vtkSubsurfacePass::GetRefinementPreparing), so
+  // a frame now and then is enough until it is done.
   void setRefinement(bool on);
   bool refinementPending() const;
+  bool refinementPreparing() const;
   // The pass's rest before it refines (vtkSubsurfacePass::SetRefinementRestSeconds): an
   // application that knows when its input rests sets it large and sets it to 0 for the frame
   // that should refine.
