@@ -21,6 +21,7 @@
 
 #include "cli_options.h"
 #include "material.h"
+#include "pending_events.h"
 #include "procedural_shapes.h"
 #include "renderer_info.h"
 #include "sssPclLightDrag.h"
@@ -370,6 +371,12 @@ int run(const Options& o) {
         exposed_refined = true;
       }
       show(refined);
+      if (!cloud->refinementPreparing()) {
+        // The next part follows at once: the input queued meanwhile, without waiting for more
+        // (while the bake's thread runs, the wait below leaves it the processors).
+        sss::cli::process_pending_events(pcl_viewer.getRenderWindow()->GetInteractor());
+        continue;
+      }
     }
     pcl_viewer.spinOnce(20);
     if (!o.screenshot.empty() && next_key == o.keys.size() && !cloud->refinementPending()) {
