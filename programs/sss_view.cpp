@@ -21,10 +21,10 @@
 
 #include "cli_options.h"
 #include "material.h"
-#include "pending_events.h"
 #include "procedural_shapes.h"
 #include "renderer_info.h"
 #include "sssPclLightDrag.h"
+#include "sssPclPendingEvents.h"
 #include "sssPclTranslucentCloud.h"
 #include "translucent_scene.h"
 
@@ -374,7 +374,7 @@ int run(const Options& o) {
       if (!cloud->refinementPreparing()) {
         // The next part follows at once: the input queued meanwhile, without waiting for more
         // (while the bake's thread runs, the wait below leaves it the processors).
-        sss::cli::process_pending_events(pcl_viewer.getRenderWindow()->GetInteractor());
+        sss::processPendingEvents(pcl_viewer.getRenderWindow()->GetInteractor());
         continue;
       }
     }

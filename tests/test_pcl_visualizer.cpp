@@ -1,6 +1,7 @@
 // The one-call integration in PCLVisualizer's own (offscreen) window, under the Xvfb server
 // that CTest starts for this test: the same B as the plain VTK path, a lit image, and a handle
-// that changes material, quality, lights and removes the cloud; the light's mouse drag.
+// that changes material, quality, lights and removes the cloud; refinement in the application's
+// loop; the light's mouse drag.
 #include <gtest/gtest.h>
 #include <pcl/point_types.h>
 #include <pcl/visualization/pcl_visualizer.h>
@@ -20,6 +21,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "sssPclLightDrag.h"
@@ -47,9 +49,10 @@ std::vector<float> radiance(vtkSubsurfacePass* pass, vtkActor* actor) {
   return std::vector<float>(B->GetPointer(0), B->GetPointer(0) + 3 * B->GetNumberOfTuples());
 }
 
-// B of the same surfels, material and light set up by hand in a plain VTK window (an X window
-// here too: one thread cannot switch between GLX and EGL contexts).
-std::vector<float> plain_vtk_radiance(const sss::Surfels& surfels, const Eigen::Vector3d& towards_light) {
+// B of the same surfels, material (a preset's name) and light set up by hand in a plain VTK
+// window (an X window here too: one thread cannot switch between GLX and EGL contexts).
+std::vector<float> plain_vtk_radiance(const sss::Surfels& surfels, const Eigen::Vector3d& towards_light,
+                                      const char* material = "marble") {
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(64, 64);
@@ -65,8 +68,9 @@ std::vector<float> plain_vtk_radiance(const sss::Surfels& surfels, const Eigen::
   mapper->SetInputData(surfels.polydata);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  vtkNew<vtkTranslucentMaterial> marble;
-  marble->ApplyTo(actor);
+  vtkNew<vtkTranslucentMaterial> preset;
+  EXPECT_TRUE(preset->SetPreset(material));
+  preset->ApplyTo(actor);
   renderer->AddActor(actor);
   vtkNew<vtkSubsurfacePass> pass;
   renderer->SetPass(pass);
@@ -155,6 +159,41 @@ TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
   EXPECT_EQ(renderer->GetPass(), nullptr);
   viewer.getRenderWindow()->Render();
   EXPECT_EQ(mean_brightness(viewer.getRenderWindow()), empty);  // black again
+}
+
+// TranslucentCloud::spinOnce in place of PCL's in an application's loop, with refinement on: a
+// change of material and light shows the preview, and the calls that follow (the bake on its
+// thread, then the parts) end with the B that the plain VTK path computes at once.
+TEST(PclVisualizer, SpinOnceRefinesToTheBOfAPassThatDoesNot) {
+  pcl::visualization::PCLVisualizer viewer("sss refinement test", true);
+  viewer.setSize(160, 160);
+  viewer.setShowFPS(false);
+  const sss::TranslucentCloud::Ptr handle =
+    sss::addTranslucentCloud(viewer, sphere(120, 240), "sphere");  // 28,560 points
+  ASSERT_TRUE(handle);
+  viewer.setCameraPosition(0, 0, 60, 0, 0, 0, 0, 1, 0);
+  handle->setRefinement(true);
+  handle->setRefinementRest(0.0);
+  const Eigen::Vector3d side(1.0, 0.5, 0.5);
+  ASSERT_TRUE(handle->setMaterial("skimmilk"));  // a bake anew, which refinement runs on a thread
+  handle->setLights({side});
+  viewer.getRenderWindow()->Render();
+  ASSERT_TRUE(handle->refinementPending()) << "the first frame shows the preview";
+  int calls = 0, preparing = 0;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (handle->refinementPending() && std::chrono::steady_clock::now() < end) {
+    handle->spinOnce(viewer);
+    ++calls;
+    if (handle->refinementPreparing()) ++preparing;
+  }
+  ASSERT_FALSE(handle->refinementPending()) << "not refined within a minute";
+  std::printf("refined after %d calls, %d of them while the bake's thread ran\n", calls,
+              preparing);
+  EXPECT_GE(preparing, 1);
+  const double difference = largest_difference(radiance(handle->pass(), handle->actor()),
+                                               plain_vtk_radiance(handle->surfels(), side, "skimmilk"));
+  std::printf("largest B difference to the plain VTK path: %.2e of the peak\n", difference);
+  EXPECT_LT(difference, 1e-5);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "sssPclPendingEvents.h"
 #include "vtkSubsurfacePass.h"
 #include "vtkSurfelMapper.h"
 #include "vtkTranslucentMaterial.h"
@@ -180,6 +181,18 @@ bool TranslucentCloud::refinementPreparing() const {
   for (const auto& pass : passes_)
     if (pass->GetRefinementPreparing()) return true;
   return false;
+}
+
+void TranslucentCloud::spinOnce(pcl::visualization::PCLVisualizer& viewer, int milliseconds) {
+  if (!refinementPending()) {
+    viewer.spinOnce(milliseconds);
+    return;
+  }
+  if (refinementPreparing())
+    viewer.spinOnce(milliseconds);
+  else
+    processPendingEvents(viewer.getRenderWindow()->GetInteractor());
+  viewer.getRenderWindow()->Render();
 }
 
 void TranslucentCloud::setExposure(double exposure) {

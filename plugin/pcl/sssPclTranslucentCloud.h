@@ -76,6 +76,13 @@ class TranslucentCloud {
   void setRefinement(bool on);
   bool refinementPending() const;
   bool refinementPreparing() const;
+  // PCLVisualizer::spinOnce for a window that refines, to call in its place in the
+  // application's loop. While a refinement is pending it draws the next frame at once (the next
+  // part once the input has rested for the pass's rest) after only the events already queued
+  // (sssPclPendingEvents.h: PCL's spinOnce would wait up to a second between parts); while the
+  // bake's CPU part runs on its thread it spins as PCL does, waiting, and then draws a frame; with
+  // nothing pending it is PCL's spinOnce.
+  void spinOnce(pcl::visualization::PCLVisualizer& viewer, int milliseconds = 1);
   // The pass's rest before it refines (vtkSubsurfacePass::SetRefinementRestSeconds): an
   // application that knows when its input rests sets it large and sets it to 0 for the frame
   // that should refine.
