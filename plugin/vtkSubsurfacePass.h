@@ -259,7 +259,8 @@ public:
   ///@{
   /**
    * Statistics: how often each step ran (the bake: the near-field table, on geometry,
-   * material or setting changes), and what the last run of each measured.
+   * material or setting changes), and what the last run of each measured. With refinement the
+   * bake's seconds are its thread's plus those of the frame that made its uploads.
    */
   vtkGetMacro(BakeRuns, int);
   vtkGetMacro(IlluminationRuns, int);

@@ -294,6 +294,29 @@ TEST(GpuRefinement, TurnedOffWhilePreparingShowsTheSettledB) {
   EXPECT_EQ(refining.pass->GetBakeRuns(), 1) << "the settled bake, once (a preview is not counted)";
 }
 
+// A change of material while the bake's CPU part runs on its thread: that run is cancelled, the
+// preview follows the new material, and the refinement ends with the new material's B.
+TEST(GpuRefinement, MaterialChangedWhilePreparingRefinesTheNewMaterial) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  const std::vector<Light> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
+  GpuScene refining(sphere, Material::preset("marble"), light),
+    settled(sphere, Material::preset("skimmilk"), light);
+  refining.pass->RefinementOn();
+  refining.pass->SetRefinementRestSeconds(0.0);
+  refining.render_B();  // the preview
+  refining.render_B();  // at rest: the bake starts on its thread
+  ASSERT_TRUE(refining.pass->GetRefinementPreparing());
+  ASSERT_TRUE(refining.material->SetPreset("skimmilk"));
+  const std::vector<Rgb> preview = refining.render_B();
+  ASSERT_TRUE(refining.pass->GetRefinementPending());
+  std::vector<double> parts;
+  int waiting = 0;
+  const std::vector<Rgb> B = render_until_refined(refining, preview, parts, waiting);
+  EXPECT_LT(largest_difference(B, settled.render_B()), 1e-5);
+  EXPECT_EQ(refining.pass->GetBakeRuns(), 1) << "the cancelled run is not counted";
+}
+
 // Colours as albedo scale the light entering each point (eq. 15 times the albedo): a uniform
 // albedo scales B channel by channel, and a two-tone one matches the CPU reference.
 TEST(GpuAlbedo, ColoursScaleTheLightEnteringEachPoint) {

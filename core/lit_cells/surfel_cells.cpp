@@ -17,18 +17,20 @@ bool on_same_surface(const LocalSurfels& surfels, std::size_t i, std::size_t j, 
   return std::fabs(height) <= thickness;
 }
 
-SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index) {
+SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index,
+                         const CancelFlag* cancel) {
   const std::size_t n = surfels.size();
   const double r = surfels.cell_radius;
   std::vector<Polygon> cells(n);
   const long count = static_cast<long>(n);
-#pragma omp parallel default(none) shared(surfels, index, cells, count, r)
+#pragma omp parallel default(none) shared(surfels, index, cells, count, r, cancel)
   {
     std::vector<std::size_t> near;
     std::vector<std::pair<double, Eigen::Vector2d>> neighbours;  // squared gap, plane point
     Polygon scratch;
 #pragma omp for schedule(dynamic, 256)
     for (long i = 0; i < count; ++i) {
+      if (cancelled(cancel)) continue;
       const Eigen::Vector3d& p = surfels.positions[i];
       Eigen::Vector3d t1, t2;
       tangent_frame(surfels.normals[i], t1, t2);
@@ -78,6 +80,7 @@ SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index) 
   SurfelCells out;
   out.area.resize(n);
   out.first.resize(n + 1, 0);
+  if (cancelled(cancel)) throw Cancelled();
   for (std::size_t i = 0; i < n; ++i) {
     out.area[i] = signed_area(cells[i]);
     out.first[i + 1] = out.first[i] + static_cast<std::uint32_t>(cells[i].size());

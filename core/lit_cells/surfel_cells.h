@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "cancel.h"
 #include "local_surfels.h"
 #include "surfel_index.h"
 
@@ -28,7 +29,9 @@ struct SurfelCells {
 // orientation).
 bool on_same_surface(const LocalSurfels& surfels, std::size_t i, std::size_t j, double thickness);
 
-// The cells of every surfel (local_surfels must carry its surface fit).
-SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index);
+// The cells of every surfel (local_surfels must carry its surface fit). Throws Cancelled once
+// `cancel` is set.
+SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index,
+                         const CancelFlag* cancel = nullptr);
 
 }  // namespace sss

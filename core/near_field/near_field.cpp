@@ -40,7 +40,8 @@ Rgb NearFieldWeights::B(std::size_t row, const std::vector<Rgb>& E) const {
 
 NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCells& cells,
                                     const SurfelIndex& index, const Dipole& dipole, double reach,
-                                    const std::vector<std::size_t>& receivers) {
+                                    const std::vector<std::size_t>& receivers,
+                                    const CancelFlag* cancel) {
   const std::size_t n = receivers.empty() ? surfels.size() : receivers.size();
   std::vector<Row> rows(n);
   const double r = surfels.cell_radius;
@@ -64,12 +65,13 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
   };
   const long count = static_cast<long>(n);
 #pragma omp parallel default(none) shared(surfels, cells, index, dipole, receivers, rows, count, \
-                                          r, reach, kappa_limit, kernel, matters)
+                                          r, reach, kappa_limit, kernel, matters, cancel)
   {
     std::vector<std::size_t> near, other;
     Polygon cell;
 #pragma omp for schedule(dynamic, 64)
     for (long k = 0; k < count; ++k) {
+      if (cancelled(cancel)) continue;
       const std::size_t o = receivers.empty() ? static_cast<std::size_t>(k) : receivers[k];
       const Eigen::Vector3d& p = surfels.positions[o];
       const Eigen::Vector3d& normal = surfels.normals[o];
@@ -116,6 +118,7 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
       }
     }
   }
+  if (cancelled(cancel)) throw Cancelled();
   NearFieldWeights out;
   out.first.resize(n + 1, 0);
   for (std::size_t k = 0; k < n; ++k)

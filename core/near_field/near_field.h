@@ -38,9 +38,10 @@ struct NearFieldWeights {
 };
 
 // Weights for `receivers` (indices into the surfels; empty: every surfel, in order) over the
-// surfels within `reach` mm.
+// surfels within `reach` mm. Throws Cancelled once `cancel` is set.
 NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCells& cells,
                                     const SurfelIndex& index, const Dipole& dipole, double reach,
-                                    const std::vector<std::size_t>& receivers = {});
+                                    const std::vector<std::size_t>& receivers = {},
+                                    const CancelFlag* cancel = nullptr);
 
 }  // namespace sss

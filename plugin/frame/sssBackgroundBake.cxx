@@ -1,5 +1,7 @@
 #include "sssBackgroundBake.h"
 
+#include "stopwatch.h"
+
 #include <exception>
 
 namespace sss
@@ -9,32 +11,50 @@ BackgroundBake::~BackgroundBake()
 {
   for (auto& [thread, job] : threads_)
   {
+    job->cancel = true;
+  }
+  for (auto& [thread, job] : threads_)
+  {
     thread.join();
   }
 }
 
 void BackgroundBake::start(BakeWork work)
 {
-  join_finished();
-  job_ = std::make_shared<Job>();
-  job_->work = std::move(work);
-  std::shared_ptr<Job> job = job_;
-  threads_.emplace_back(std::thread([job] {
+  drop();
+  auto job = std::make_shared<Job>();
+  job->work = std::move(work);
+  threads_.reserve(threads_.size() + 1);  // emplace_back below cannot throw with a thread built
+  std::thread thread([job] {
     try
     {
-      job->result = job->work();
+      Stopwatch clock;
+      job->result = job->work(job->cancel);
+      if (job->result)
+      {
+        job->result->seconds = clock.lap();
+      }
     }
     catch (const std::exception& e)
     {
       job->error = e.what();
     }
+    catch (...)
+    {
+      job->error = "the bake's preparation failed";
+    }
     job->finished = true;
-  }),
-    job);
+  });
+  threads_.emplace_back(std::move(thread), job);
+  job_ = std::move(job);
 }
 
 void BackgroundBake::drop()
 {
+  if (job_)
+  {
+    job_->cancel = true;  // its result is not wanted: the work stops at its next check
+  }
   job_ = nullptr;
   join_finished();
 }

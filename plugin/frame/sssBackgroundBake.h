@@ -23,9 +23,10 @@ public:
   BackgroundBake(const BackgroundBake&) = delete;
   BackgroundBake& operator=(const BackgroundBake&) = delete;
 
-  // Runs `work` on a new thread; a run under way is dropped (its thread finishes unheeded).
+  // Runs `work` on a new thread; a run under way is dropped.
   void start(BakeWork work);
-  // Drops the run under way, if any.
+  // Drops the run under way, if any: it is cancelled and its thread joined once it has stopped.
+  // The destructor cancels every run and waits for their threads.
   void drop();
   // Whether a run was started and not taken or dropped, and whether it has finished.
   bool running() const { return job_ != nullptr; }
@@ -42,6 +43,7 @@ private:
     std::unique_ptr<BakePreparation> result;
     std::string error;
     std::atomic<bool> finished{ false };
+    CancelFlag cancel{ false };
   };
   // Joins the threads whose runs have finished.
   void join_finished();

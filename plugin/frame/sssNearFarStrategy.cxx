@@ -97,21 +97,23 @@ void NearFarStrategy::release(vtkWindow* window)
 }
 
 std::unique_ptr<NearFarStrategy::Preparation> NearFarStrategy::prepare(
-  const LocalSurfels& local, const Dipole& dipole)
+  const LocalSurfels& local, const Dipole& dipole, const CancelFlag* cancel)
 {
   auto prepared = std::make_unique<Preparation>();
   prepared->split = NearFarSplit::choose(
     dipole, local.cell_radius > 0.0 ? local.cell_radius : 1.0, kKernelSupportFraction);
   const SurfelIndex index(local.positions);
-  prepared->cells = surfel_cells(local, index);
+  prepared->cells = surfel_cells(local, index, cancel);
   prepared->weights =
-    near_field_weights(local, prepared->cells, index, dipole, prepared->split.reach);
+    near_field_weights(local, prepared->cells, index, dipole, prepared->split.reach, {}, cancel);
   return prepared;
 }
 
 BakeWork NearFarStrategy::bake_work(const LocalSurfels& local, const Dipole& dipole) const
 {
-  return [local, dipole]() -> std::unique_ptr<BakePreparation> { return prepare(local, dipole); };
+  return [local, dipole](const CancelFlag& cancel) -> std::unique_ptr<BakePreparation> {
+    return prepare(local, dipole, &cancel);
+  };
 }
 
 void NearFarStrategy::adopt(std::unique_ptr<BakePreparation> prepared)

@@ -61,7 +61,8 @@ private:
   struct Gpu;
   struct Preparation;
   // bake_work's work. Throws std::exception.
-  static std::unique_ptr<Preparation> prepare(const LocalSurfels& local, const Dipole& dipole);
+  static std::unique_ptr<Preparation> prepare(
+    const LocalSurfels& local, const Dipole& dipole, const CancelFlag* cancel = nullptr);
   std::unique_ptr<Gpu> gpu_;
 };
 

@@ -4,6 +4,7 @@
 #ifndef sssStrategy_h
 #define sssStrategy_h
 
+#include "cancel.h"
 #include "quality_settings.h"
 #include "sssLightMaps.h"
 
@@ -80,10 +81,11 @@ class BakePreparation
 {
 public:
   virtual ~BakePreparation() = default;
+  double seconds = 0.0;  // the work's, on its thread (sssBackgroundBake)
 };
 // Work that owns copies of its inputs and touches no GL: it may run on another thread. It
-// throws std::exception when it cannot be done.
-using BakeWork = std::function<std::unique_ptr<BakePreparation>()>;
+// throws std::exception when it cannot be done, Cancelled once `cancel` is set.
+using BakeWork = std::function<std::unique_ptr<BakePreparation>(const CancelFlag& cancel)>;
 
 class Strategy
 {

@@ -162,7 +162,7 @@ bool TranslucentActorState::update(
         baked_ = true;
         baked_inputs_ = bake_inputs(context, actor);
         report.bake = true;
-        report.seconds_bake = clock.lap();
+        report.seconds_bake += clock.lap();
       }
       if (progress != BakeProgress::Done)
       {
@@ -239,6 +239,7 @@ bool TranslucentActorState::bake(const StepContext& context, const ActorInputs& 
     {
       return false;
     }
+    report.seconds_bake = prepared->seconds;  // update() adds this frame's part
     g.strategy->adopt(std::move(prepared));
     if (std::isfinite(context.seconds))
     {

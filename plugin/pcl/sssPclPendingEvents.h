@@ -7,7 +7,8 @@ class vtkRenderWindowInteractor;
 namespace sss {
 
 // Dispatches the X events already queued for `interactor`'s window (keys, drags, exposes) and
-// returns at once when there are none. PCLVisualizer::spinOnce and VTK 9.1's ProcessEvents wait
+// returns at once when there are none, or when one of them ends the event loop (q, the window
+// closed). Without an X interactor it does nothing. PCLVisualizer::spinOnce and VTK 9.1's ProcessEvents wait
 // up to a second for an event when none is queued.
 void processPendingEvents(vtkRenderWindowInteractor* interactor);
 

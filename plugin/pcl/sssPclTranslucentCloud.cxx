@@ -192,7 +192,7 @@ void TranslucentCloud::spinOnce(pcl::visualization::PCLVisualizer& viewer, int m
     viewer.spinOnce(milliseconds);
   else
     processPendingEvents(viewer.getRenderWindow()->GetInteractor());
-  viewer.getRenderWindow()->Render();
+  if (!viewer.wasStopped()) viewer.getRenderWindow()->Render();  // not a closed window again
 }
 
 void TranslucentCloud::setExposure(double exposure) {
