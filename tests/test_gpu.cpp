@@ -271,6 +271,18 @@ TEST(GpuRefinement, InPartsOverFramesGivesTheSameB) {
   EXPECT_GT(refining.pass->GetLastBakeSeconds(), 0.0);
 }
 
+// Refinement on with no rest, and two frames: the preview, then the first at rest, which starts
+// the bake's CPU part on its thread (checked: preparing, nothing refined yet).
+void render_until_preparing(GpuScene& refining) {
+  refining.pass->RefinementOn();
+  refining.pass->SetRefinementRestSeconds(0.0);
+  refining.render_B();  // the preview
+  refining.render_B();  // at rest: the bake starts on its thread
+  ASSERT_TRUE(refining.pass->GetRefinementPending());
+  ASSERT_TRUE(refining.pass->GetRefinementPreparing());
+  EXPECT_EQ(refining.pass->GetRefinedShare(), 0.0);
+}
+
 // Refinement turned off while the bake's CPU part runs on its thread: the next frame waits for
 // it and shows the settled B, as a pass that never refined.
 TEST(GpuRefinement, TurnedOffWhilePreparingShowsTheSettledB) {
@@ -279,13 +291,7 @@ TEST(GpuRefinement, TurnedOffWhilePreparingShowsTheSettledB) {
   const Material marble = Material::preset("marble");
   const std::vector<Light> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
   GpuScene refining(sphere, marble, light), settled(sphere, marble, light);
-  refining.pass->RefinementOn();
-  refining.pass->SetRefinementRestSeconds(0.0);
-  refining.render_B();  // the preview
-  refining.render_B();  // at rest: the bake starts on its thread
-  ASSERT_TRUE(refining.pass->GetRefinementPending());
-  ASSERT_TRUE(refining.pass->GetRefinementPreparing());
-  EXPECT_EQ(refining.pass->GetRefinedShare(), 0.0);
+  ASSERT_NO_FATAL_FAILURE(render_until_preparing(refining));
   refining.pass->RefinementOff();
   const std::vector<Rgb> B = refining.render_B();
   EXPECT_FALSE(refining.pass->GetRefinementPending());
@@ -302,11 +308,7 @@ TEST(GpuRefinement, MaterialChangedWhilePreparingRefinesTheNewMaterial) {
   const std::vector<Light> light{{Eigen::Vector3d(1, 1, 1), 1.0}};
   GpuScene refining(sphere, Material::preset("marble"), light),
     settled(sphere, Material::preset("skimmilk"), light);
-  refining.pass->RefinementOn();
-  refining.pass->SetRefinementRestSeconds(0.0);
-  refining.render_B();  // the preview
-  refining.render_B();  // at rest: the bake starts on its thread
-  ASSERT_TRUE(refining.pass->GetRefinementPreparing());
+  ASSERT_NO_FATAL_FAILURE(render_until_preparing(refining));
   ASSERT_TRUE(refining.material->SetPreset("skimmilk"));
   const std::vector<Rgb> preview = refining.render_B();
   ASSERT_TRUE(refining.pass->GetRefinementPending());
