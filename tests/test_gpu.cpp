@@ -312,6 +312,8 @@ TEST(GpuRefinement, MaterialChangedWhilePreparingRefinesTheNewMaterial) {
   ASSERT_TRUE(refining.material->SetPreset("skimmilk"));
   const std::vector<Rgb> preview = refining.render_B();
   ASSERT_TRUE(refining.pass->GetRefinementPending());
+  EXPECT_FALSE(refining.pass->GetRefinementPreparing())
+    << "the frame that shows the new material's preview cancels the old material's bake";
   std::vector<double> parts;
   int waiting = 0;
   const std::vector<Rgb> B = render_until_refined(refining, preview, parts, waiting);

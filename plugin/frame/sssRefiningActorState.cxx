@@ -32,7 +32,8 @@ bool RefiningActorState::update(const StepContext& context, const ActorInputs& a
   if (!preview_shown_ || !preview_.is_current(coarse, actor))
   {
     // The inputs changed since the last frame: the preview follows them, and the rest counts
-    // from when it is ready.
+    // from when it is ready. A bake under way for the settled B of other inputs stops now.
+    settled_.drop_stale_preparation(context, actor);
     if (!preview_.update(coarse, actor, report, error))
     {
       // No preview (its grid did not fit, say): the settings' B at once.

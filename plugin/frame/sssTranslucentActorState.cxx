@@ -118,6 +118,15 @@ bool TranslucentActorState::geometry_current(
     bake_inputs(context, actor) == baked_inputs_;
 }
 
+void TranslucentActorState::drop_stale_preparation(
+  const StepContext& context, const ActorInputs& actor)
+{
+  if (background_.running() && !(background_inputs_ == bake_inputs(context, actor)))
+  {
+    background_.drop();
+  }
+}
+
 bool TranslucentActorState::is_current(const StepContext& context, const ActorInputs& actor) const
 {
   return valid_ && geometry_current(context, actor) && actor.lights == lights_;
