@@ -226,6 +226,12 @@ void vtkSubsurfacePass::UpdateTranslucentActors(const vtkRenderState* s, vtkOpen
   this->RefinementPreparing = this->RefinementPending && impl.Actors.preparing();
 }
 
+bool vtkSubsurfacePass::IsRefinementPartDue()
+{
+  return this->Impl->Actors.part_due(
+    { this->Refinement, this->RefinementRestSeconds, this->RefinementFrameSeconds });
+}
+
 void vtkSubsurfacePass::Record(const sss::StepReport& report)
 {
   if (report.bake)

@@ -213,7 +213,9 @@ public:
    * the far field for about RefinementFrameSeconds (default 0.1) a frame (at least one of its
    * parts), and the last shows it. Until then every frame (a camera move, an overlay's update)
    * shows the preview. An application keeps rendering while GetRefinementPending() is true and
-   * its input rests. A bake (new geometry, material or settings) runs its CPU part (the cells
+   * its input rests, or renders only when IsRefinementPartDue() says a frame would take the
+   * refinement further (a frame before that redraws the preview, and takes processor time from
+   * the bake's thread). A bake (new geometry, material or settings) runs its CPU part (the cells
    * and the near-field table's weights, most of its time) on a thread of its own meanwhile, and
    * its uploads in the first frame that finds it done. Each method keeps its own bake. Off with
    * pieces: there every frame is refined.
@@ -241,6 +243,13 @@ public:
    * its thread; the refinement's light move starts once it is done (RefinedShare stays 0).
    */
   vtkGetMacro(RefinementPreparing, bool);
+  /**
+   * Whether a frame drawn now, with the inputs of the last, would take a pending refinement
+   * further: the inputs have rested for RefinementRestSeconds and no bake's CPU part is still at
+   * work on its thread. Unlike the values above, it is read live (between frames, with no
+   * render), so that a loop can poll it and render only when it is true.
+   */
+  bool IsRefinementPartDue();
   /** The last preview's steps 1-2 in seconds (0 before the first; exact with MeasureStepTimes). */
   vtkGetMacro(LastPreviewSeconds, double);
   /**

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <pcl/point_types.h>
 #include <pcl/visualization/pcl_visualizer.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
@@ -25,6 +26,7 @@
 #include <cmath>
 
 #include "sssPclLightDrag.h"
+#include "sssPclPendingEvents.h"
 #include "sssPclTranslucentCloud.h"
 
 namespace {
@@ -162,8 +164,10 @@ TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
 }
 
 // TranslucentCloud::spinOnce in place of PCL's in an application's loop, with refinement on: a
-// change of material and light shows the preview, and the calls that follow (the bake on its
-// thread, then the parts) end with the B that the plain VTK path computes at once.
+// change of material and light shows the preview, and the calls that follow (the rest, the bake
+// on its thread, then the parts) end with the B that the plain VTK path computes at once. They
+// draw no frame during the rest or while the bake's thread is at work (such a frame would only
+// redraw the preview, taking the processors from the thread).
 TEST(PclVisualizer, SpinOnceRefinesToTheBOfAPassThatDoesNot) {
   pcl::visualization::PCLVisualizer viewer("sss refinement test", true);
   viewer.setSize(160, 160);
@@ -173,23 +177,49 @@ TEST(PclVisualizer, SpinOnceRefinesToTheBOfAPassThatDoesNot) {
   ASSERT_TRUE(handle);
   viewer.setCameraPosition(0, 0, 60, 0, 0, 0, 0, 1, 0);
   handle->setRefinement(true);
-  handle->setRefinementRest(0.0);
+  const double rest = 1.0;  // s; the rest counts from the preview's steps, inside its frame
+  handle->setRefinementRest(rest);
   const Eigen::Vector3d side(1.0, 0.5, 0.5);
   ASSERT_TRUE(handle->setMaterial("skimmilk"));  // a bake anew, which refinement runs on a thread
   handle->setLights({side});
   viewer.getRenderWindow()->Render();
+  // The new window's expose events, which redraw it whatever the refinement.
+  sss::processPendingEvents(viewer.getRenderWindow()->GetInteractor());
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point previewed = Clock::now();
   ASSERT_TRUE(handle->refinementPending()) << "the first frame shows the preview";
-  int calls = 0, preparing = 0;
-  const auto end = std::chrono::steady_clock::now() + std::chrono::minutes(1);
-  while (handle->refinementPending() && std::chrono::steady_clock::now() < end) {
+  struct Frames {
+    int count = 0;
+    Clock::time_point last_start;
+  } frames;
+  vtkNew<vtkCallbackCommand> on_start;
+  on_start->SetClientData(&frames);
+  on_start->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+    auto* f = static_cast<Frames*>(data);
+    ++f->count;
+    f->last_start = Clock::now();
+  });
+  viewer.getRenderWindow()->AddObserver(vtkCommand::StartEvent, on_start);
+  int calls = 0, preparing = 0, during_rest = 0, redrawn_while_preparing = 0;
+  const Clock::time_point end = Clock::now() + std::chrono::minutes(1);
+  while (handle->refinementPending() && Clock::now() < end) {
+    const int frames_before = frames.count;
+    const bool preparing_before = handle->refinementPreparing();
     handle->spinOnce(viewer);
     ++calls;
     if (handle->refinementPreparing()) ++preparing;
+    if (frames.count == frames_before) continue;
+    // Half the rest: the preview's frame goes on drawing for a while after its steps.
+    if (std::chrono::duration<double>(frames.last_start - previewed).count() < 0.5 * rest)
+      ++during_rest;
+    if (preparing_before && handle->refinementPreparing()) ++redrawn_while_preparing;
   }
   ASSERT_FALSE(handle->refinementPending()) << "not refined within a minute";
-  std::printf("refined after %d calls, %d of them while the bake's thread ran\n", calls,
-              preparing);
+  std::printf("refined after %d calls and %d frames, %d calls while the bake's thread ran\n",
+              calls, frames.count, preparing);
   EXPECT_GE(preparing, 1);
+  EXPECT_EQ(during_rest, 0) << "frames drawn in the first half of the " << rest << " s rest";
+  EXPECT_EQ(redrawn_while_preparing, 0) << "frames that redrew the preview while the bake ran";
   const double difference = largest_difference(radiance(handle->pass(), handle->actor()),
                                                plain_vtk_radiance(handle->surfels(), side, "skimmilk"));
   std::printf("largest B difference to the plain VTK path: %.2e of the peak\n", difference);

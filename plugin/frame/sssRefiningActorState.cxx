@@ -86,6 +86,15 @@ bool RefiningActorState::update(const StepContext& context, const ActorInputs& a
   return true;
 }
 
+bool RefiningActorState::part_due(const RefinementRule& rule) const
+{
+  using Clock = std::chrono::steady_clock;
+  return rule.on && preview_shown_ && !settled_failed_ &&
+    std::chrono::duration<double>(Clock::now() - preview_inputs_since_).count() >=
+    rule.rest_seconds &&
+    !settled_.preparation_under_way();
+}
+
 TranslucentActorState& RefiningActorState::settled_for_given_radiance()
 {
   preview_shown_ = false;

@@ -51,6 +51,10 @@ public:
   double refined_share() const { return refined_share_; }
   // While refining, whether the settled bake's CPU part still runs on its thread.
   bool preparing() const { return preview_shown_ && settled_.preparing(); }
+  // Whether an update now, with the inputs of the last, would take the refinement further: a
+  // preview is shown, its inputs have rested for the rule's rest_seconds, and no bake's thread
+  // is still at work. Read at any time, between frames.
+  bool part_due(const RefinementRule& rule) const;
 
   // The mean relative error (error_metric.h) of the last preview against the settled B that
   // replaced it (0.01 = 1 %); negative before the first refinement.

@@ -77,6 +77,9 @@ public:
   bool is_current(const StepContext& context, const ActorInputs& actor) const;
   // Whether a bake's CPU part runs on its thread (update() returns unfinished meanwhile).
   bool preparing() const { return background_.running(); }
+  // Whether that thread is still at work: while it is, an update has nothing to do (read at
+  // any time; preparing() stays true until an update takes the result).
+  bool preparation_under_way() const { return background_.running() && !background_.finished(); }
   // Cancels a bake's CPU part that runs for other surfels, material or settings than these, so
   // that a run the inputs have left behind stops at once, not at the next update.
   void drop_stale_preparation(const StepContext& context, const ActorInputs& actor);

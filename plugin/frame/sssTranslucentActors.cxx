@@ -169,6 +169,18 @@ double TranslucentActors::preview_error() const
   return largest;
 }
 
+bool TranslucentActors::part_due(const RefinementRule& rule) const
+{
+  for (const auto& entry : states_)
+  {
+    if (entry.second->part_due(rule))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 void TranslucentActors::set_precomputed(vtkActor* actor, vtkFloatArray* B)
 {
   if (B)

@@ -59,6 +59,9 @@ public:
   double refined_share() const { return refined_share_; }
   // Whether a refining actor's bake still runs its CPU part on a thread.
   bool preparing() const { return preparing_; }
+  // Whether a frame now, with unchanged inputs, would take an actor's refinement further
+  // (RefiningActorState::part_due); read at any time, between frames.
+  bool part_due(const RefinementRule& rule) const;
 
   // The actors whose B is valid this frame; none after clear_ready.
   const std::set<vtkActor*>& ready() const { return ready_; }

@@ -4,6 +4,7 @@
 #include <pcl/visualization/pcl_visualizer.h>
 
 #include <vtkActor.h>
+#include <vtkCommand.h>
 #include <vtkFloatArray.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
@@ -13,10 +14,12 @@
 #include <vtkRendererCollection.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "sssPclPendingEvents.h"
@@ -103,9 +106,15 @@ TranslucentCloud::TranslucentCloud(pcl::visualization::PCLVisualizer& viewer, st
   }
   viewer_.getShapeActorMap()->emplace(id_, actor_);
   setQuality(options.quality);
+  window_ = viewer_.getRenderWindow();
+  frame_observer_ = window_->AddObserver(vtkCommand::EndEvent, this, &TranslucentCloud::frameDrawn);
 }
 
-TranslucentCloud::~TranslucentCloud() = default;
+TranslucentCloud::~TranslucentCloud() {
+  if (window_) window_->RemoveObserver(frame_observer_);
+}
+
+void TranslucentCloud::frameDrawn() { drawn_inputs_ = inputsTime(); }
 
 bool TranslucentCloud::setMaterial(const std::string& preset) {
   if (!material_->SetPreset(preset.c_str())) return false;
@@ -183,16 +192,31 @@ bool TranslucentCloud::refinementPreparing() const {
   return false;
 }
 
+bool TranslucentCloud::refinementPartDue() const {
+  for (const auto& pass : passes_)
+    if (pass->IsRefinementPartDue()) return true;
+  return false;
+}
+
+vtkMTimeType TranslucentCloud::inputsTime() const {
+  vtkMTimeType latest = std::max(actor_->GetMTime(), material_->GetMTime());
+  for (const auto& pass : passes_) latest = std::max(latest, pass->GetMTime());
+  for (const auto& light : lights_) latest = std::max(latest, light->GetMTime());
+  return latest;
+}
+
 void TranslucentCloud::spinOnce(pcl::visualization::PCLVisualizer& viewer, int milliseconds) {
   if (!refinementPending()) {
     viewer.spinOnce(milliseconds);
     return;
   }
-  if (refinementPreparing())
-    viewer.spinOnce(milliseconds);
-  else
-    processPendingEvents(viewer.getRenderWindow()->GetInteractor());
-  if (!viewer.wasStopped()) viewer.getRenderWindow()->Render();  // not a closed window again
+  processPendingEvents(viewer.getRenderWindow()->GetInteractor());
+  if (viewer.wasStopped()) return;  // not a closed window again
+  if (refinementPartDue() || inputsTime() > drawn_inputs_) {
+    viewer.getRenderWindow()->Render();
+  } else {
+    std::this_thread::sleep_for(std::chrono::milliseconds(std::max(milliseconds, 1)));
+  }
 }
 
 void TranslucentCloud::setExposure(double exposure) {

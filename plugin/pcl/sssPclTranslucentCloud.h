@@ -4,6 +4,7 @@
 
 #include <pcl/point_cloud.h>
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
 
 #include <Eigen/Core>
 #include <memory>
@@ -14,6 +15,7 @@
 
 class vtkActor;
 class vtkLight;
+class vtkRenderWindow;
 class vtkRenderer;
 class vtkSubsurfacePass;
 class vtkSurfelMapper;
@@ -71,17 +73,20 @@ class TranslucentCloud {
   // the material is shown first from the 2005 paper's method, and the frames drawn once the
   // input rests compute the quality's B, a part each, and show it. refinementPending(): a
   // preview is on screen, so keep rendering while the input rests. refinementPreparing(): the
-  // bake's CPU part runs on a thread meanwhile (vtkSubsurfacePass::GetRefinementPreparing), so
-  // a frame now and then is enough until it is done.
+  // bake's CPU part runs on a thread meanwhile (vtkSubsurfacePass::GetRefinementPreparing).
+  // refinementPartDue(): a frame drawn now would take the refinement further (the input has
+  // rested, no bake's thread is at work; vtkSubsurfacePass::IsRefinementPartDue, read live).
   void setRefinement(bool on);
   bool refinementPending() const;
   bool refinementPreparing() const;
+  bool refinementPartDue() const;
   // PCLVisualizer::spinOnce for a window that refines, to call in its place in the
-  // application's loop. While a refinement is pending it draws the next frame at once (the next
-  // part once the input has rested for the pass's rest) after only the events already queued
-  // (sssPclPendingEvents.h: PCL's spinOnce would wait up to a second between parts); while the
-  // bake's CPU part runs on its thread it spins as PCL does, waiting, and then draws a frame; with
-  // nothing pending it is PCL's spinOnce.
+  // application's loop. While a refinement is pending it handles the events already queued
+  // (sssPclPendingEvents.h: PCL's spinOnce would wait up to a second between parts) and draws a
+  // frame only when one is due (the next part) or the handle's actor, material, lights or pass
+  // changed since its last frame; otherwise it waits `milliseconds`, so that neither the rest
+  // nor the bake's thread is spent redrawing the preview. With nothing pending it is PCL's
+  // spinOnce.
   void spinOnce(pcl::visualization::PCLVisualizer& viewer, int milliseconds = 1);
   // The pass's rest before it refines (vtkSubsurfacePass::SetRefinementRestSeconds): an
   // application that knows when its input rests sets it large and sets it to 0 for the frame
@@ -126,8 +131,16 @@ class TranslucentCloud {
   vtkSmartPointer<vtkTranslucentMaterial> material_;
   std::vector<vtkSmartPointer<vtkSubsurfacePass>> passes_;  // one per renderer
   std::vector<vtkSmartPointer<vtkLight>> lights_;
+  // The latest modification time of the actor, its material, the passes and the lights.
+  vtkMTimeType inputsTime() const;
+  // After each frame of the window: what it drew is of inputsTime().
+  void frameDrawn();
+
   Quality quality_ = Quality::Balanced;
   bool attached_ = true;
+  vtkMTimeType drawn_inputs_ = 0;  // inputsTime() at the window's last frame
+  vtkWeakPointer<vtkRenderWindow> window_;  // the viewer's, observed for frameDrawn
+  unsigned long frame_observer_ = 0;
 };
 
 // Makes `cloud` translucent in `viewer` (no subclassing; the visualizer's own window and
