@@ -17,6 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli_options.h"
@@ -323,19 +324,30 @@ int run(const Options& o) {
   };
   int shots = 0;
   int shown_frame = -1;
-  // Puts the frame's state in the status line (drawn at once: a render with unchanged inputs
-  // runs no step, a preview's included), and writes it with --screenshots when asked.
-  const auto show = [&](bool shot) {
+  int noted_frame = -1;  // the frame whose state the status line holds; no frame drew it yet
+                         // while clock.frames is still that frame
+  // Puts the state of the frame just drawn in the status line without drawing again: the next
+  // frame shows it (a drag's, a refinement's next part), or draw_status once the input rests.
+  const auto note = [&] {
     const std::string line = status();  // the time of the frame that ran the steps
     pcl_viewer.updateText(line, 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
+    shown_frame = noted_frame = clock.frames;
+    std::fprintf(stderr, "%s\n", line.c_str());
+  };
+  // Draws the status line (a frame with unchanged inputs runs no step) and writes the window
+  // with --screenshots when asked.
+  const auto draw_status = [&](bool shot) {
     pcl_viewer.getRenderWindow()->Render();
     shown_frame = clock.frames;
-    std::fprintf(stderr, "%s\n", line.c_str());
     if (shot && !o.screenshots.empty()) {
       char name[32];
       std::snprintf(name, sizeof name, "-%02d.png", shots++);
       pcl_viewer.saveScreenshot(o.screenshots + name);
     }
+  };
+  const auto show = [&](bool shot) {
+    note();
+    draw_status(shot);
   };
 
   std::fprintf(stderr, "first frame (steps 1-2 run now)...\n");
@@ -355,28 +367,42 @@ int run(const Options& o) {
       viewer.changed = false;
       pcl_viewer.getRenderWindow()->Render();
       viewer.last_input = std::chrono::steady_clock::now();  // the rest counts from the preview
-      show(true);
+      if (o.screenshots.empty())
+        note();  // a drag's next frame, or the rest, draws it
+      else
+        show(true);
     } else if (clock.frames != shown_frame) {  // a camera move: its frame rate
       pcl_viewer.updateText(status(), 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
       shown_frame = clock.frames;
       viewer.last_input = std::chrono::steady_clock::now();  // an orbit is input too
     } else if (cloud->refinementPending() && viewer.resting() && !drag.dragging() &&
                next_key >= o.keys.size()) {
-      cloud->setRefinementRest(0.0);  // this frame takes the next part of the refinement
-      pcl_viewer.getRenderWindow()->Render();
+      cloud->setRefinementRest(0.0);  // a frame now takes the next part of the refinement
+      const bool due = cloud->refinementPartDue();
+      if (due) pcl_viewer.getRenderWindow()->Render();
       cloud->setRefinementRest(kNever);
+      if (!due) {
+        // The bake's thread is at work: the input only, no frame that would redraw the preview
+        // and take the processors from it (but the one that says so).
+        if (noted_frame == clock.frames) draw_status(false);
+        sss::processPendingEvents(pcl_viewer.getRenderWindow()->GetInteractor());
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        continue;
+      }
       const bool refined = !cloud->refinementPending();
       if (refined && !exposed_refined) {
         cloud->autoExpose();
         exposed_refined = true;
       }
-      show(refined);
-      if (!cloud->refinementPreparing()) {
-        // The next part follows at once: the input queued meanwhile, without waiting for more
-        // (while the bake's thread runs, the wait below leaves it the processors).
-        sss::processPendingEvents(pcl_viewer.getRenderWindow()->GetInteractor());
-        continue;
-      }
+      if (refined)
+        show(true);
+      else
+        note();  // drawn by the next part's frame
+      // The next part follows at once: the input queued meanwhile, without waiting for more.
+      sss::processPendingEvents(pcl_viewer.getRenderWindow()->GetInteractor());
+      continue;
+    } else if (noted_frame == clock.frames && viewer.resting() && !drag.dragging()) {
+      draw_status(false);  // no frame followed the last change's
     }
     pcl_viewer.spinOnce(20);
     if (!o.screenshot.empty() && next_key == o.keys.size() && !cloud->refinementPending()) {
