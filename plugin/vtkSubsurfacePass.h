@@ -211,11 +211,13 @@ public:
    * once the inputs have not changed for RefinementRestSeconds (default 0.3) compute B at the
    * settings above, a part each: the light map, the cells and the near field in the first, then
    * the far field for about RefinementFrameSeconds (default 0.1) a frame (at least one of its
-   * parts), and the last shows it. Until then every frame (a camera move, an overlay's update)
-   * shows the preview. An application keeps rendering while GetRefinementPending() is true and
-   * its input rests, or renders only when IsRefinementPartDue() says a frame would take the
-   * refinement further (a frame before that redraws the preview, and takes processor time from
-   * the bake's thread). A bake (new geometry, material or settings) runs its CPU part (the cells
+   * parts: a walk root's sum over a band of receivers, the bands narrowed to that time as they
+   * are measured; with 0, one root's over every receiver), and the last shows it. Until then
+   * every frame (a camera move, an overlay's update) shows the preview. An application keeps
+   * rendering while GetRefinementPending() is true and its input rests, or runs the parts with
+   * PrepareFrame between its frames when IsRefinementPartDue() says one is due, drawing only
+   * when it likes (the last part's B shows in the next frame): a frame drawn for nothing redraws
+   * the preview and takes processor time from the parts and the bake's thread. A bake (new geometry, material or settings) runs its CPU part (the cells
    * and the near-field table's weights, most of its time) on a thread of its own meanwhile, and
    * its uploads in the first frame that finds it done. Each method keeps its own bake. Off with
    * pieces: there every frame is refined.

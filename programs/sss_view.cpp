@@ -34,6 +34,7 @@ namespace {
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 // With refinement, the input rests once no key or drag came for this long.
 constexpr double kRestSeconds = 0.3;
+constexpr double kStatusSeconds = 1.0;  // while refining, a frame this often shows the share done
 constexpr double kNever = 3600.0;
 
 std::string usage() {
@@ -188,7 +189,7 @@ struct LightRig {
 };
 
 struct FrameClock {
-  std::chrono::steady_clock::time_point start;
+  std::chrono::steady_clock::time_point start, end;
   double last_seconds = 0.0;
   int frames = 0;
 };
@@ -199,8 +200,8 @@ void on_render_start(vtkObject*, unsigned long, void* data, void*) {
 
 void on_render_end(vtkObject*, unsigned long, void* data, void*) {
   auto* clock = static_cast<FrameClock*>(data);
-  clock->last_seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - clock->start).count();
+  clock->end = std::chrono::steady_clock::now();
+  clock->last_seconds = std::chrono::duration<double>(clock->end - clock->start).count();
   ++clock->frames;
 }
 
@@ -328,7 +329,9 @@ int run(const Options& o) {
                          // while clock.frames is still that frame
   // Puts the state of the frame just drawn in the status line without drawing again: the next
   // frame shows it (a drag's, a refinement's next part), or draw_status once the input rests.
+  bool noted_preparing = false;  // the status line says the bake's thread runs
   const auto note = [&] {
+    noted_preparing = cloud->refinementPreparing();
     const std::string line = status();  // the time of the frame that ran the steps
     pcl_viewer.updateText(line, 10, o.height - 30, 16, 1.0, 1.0, 1.0, "sss_status");
     shown_frame = noted_frame = clock.frames;
@@ -377,9 +380,9 @@ int run(const Options& o) {
       viewer.last_input = std::chrono::steady_clock::now();  // an orbit is input too
     } else if (cloud->refinementPending() && viewer.resting() && !drag.dragging() &&
                next_key >= o.keys.size()) {
-      cloud->setRefinementRest(0.0);  // a frame now takes the next part of the refinement
+      cloud->setRefinementRest(0.0);  // the next part of the refinement is due now
       const bool due = cloud->refinementPartDue();
-      if (due) pcl_viewer.getRenderWindow()->Render();
+      if (due) cloud->refinePart();  // between frames: the parts draw no view
       cloud->setRefinementRest(kNever);
       if (!due) {
         // The bake's thread is at work: the input only, no frame that would redraw the preview
@@ -396,8 +399,10 @@ int run(const Options& o) {
       }
       if (refined)
         show(true);
-      else
-        note();  // drawn by the next part's frame
+      else if (cloud->refinementPreparing() != noted_preparing ||
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - clock.end)
+                 .count() >= kStatusSeconds)
+        show(false);  // the bake's thread started or ended, or how far it has come
       // The next part follows at once: the input queued meanwhile, without waiting for more.
       sss::processPendingEvents(pcl_viewer.getRenderWindow()->GetInteractor());
       continue;

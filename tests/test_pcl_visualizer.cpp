@@ -165,9 +165,9 @@ TEST(PclVisualizer, OneCallMakesACloudTranslucentInTheVisualizersOwnWindow) {
 
 // TranslucentCloud::spinOnce in place of PCL's in an application's loop, with refinement on: a
 // change of material and light shows the preview, and the calls that follow (the rest, the bake
-// on its thread, then the parts) end with the B that the plain VTK path computes at once. They
-// draw no frame during the rest or while the bake's thread is at work (such a frame would only
-// redraw the preview, taking the processors from the thread).
+// on its thread, then the parts, run between frames) end with the B that the plain VTK path
+// computes at once. They draw no frame during the rest or while the bake's thread is at work
+// (such a frame would only redraw the preview, taking the processors from the thread).
 TEST(PclVisualizer, SpinOnceRefinesToTheBOfAPassThatDoesNot) {
   pcl::visualization::PCLVisualizer viewer("sss refinement test", true);
   viewer.setSize(160, 160);

@@ -18,6 +18,10 @@ namespace sss
 namespace
 {
 constexpr int kWalkRoot = 7;  // pyramid level whose nodes the far field's quads start from
+// A quad drawn in parts: its narrowest band of rows, and how much wider than the narrowest
+// yet a band may grow.
+constexpr int kMostBandsPerQuad = 64;
+constexpr int kWidestBand = 4;
 }
 
 namespace
@@ -39,8 +43,17 @@ int far_field_parts(const LitCells& cells, int lights)
   return parts;
 }
 
+double FarFieldProgress::share(int rows) const
+{
+  if (total <= 0)
+  {
+    return 1.0;
+  }
+  return (drawn + static_cast<double>(rows_drawn) / std::max(rows, 1)) / total;
+}
+
 void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
-  const LitCells& cells, int lights, const FarFieldSettings& settings,
+  const LitCells& cells, int lights, int rows, const FarFieldSettings& settings,
   FarFieldProgress& progress, double seconds)
 {
   Stopwatch clock;
@@ -56,6 +69,19 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
   program->SetUniformi("addFarField", 1);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFunc(GL_ONE, GL_ONE);
+  const bool in_parts = std::isfinite(seconds);
+  // Bands sized to the frame's time; with none, whole quads (a part a frame).
+  const bool banded = in_parts && progress.band_seconds > 0.0;
+  const int least_band = std::max(1, rows / kMostBandsPerQuad);
+  if (progress.band_rows <= 0 || !banded)
+  {
+    progress.band_rows = progress.narrowest_band = rows;
+  }
+  vtkOpenGLState::ScopedglScissor scissor_saved(state);
+  vtkOpenGLState::ScopedglEnableDisable scissor_test_saved(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  GLint viewport[4];
+  state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
   // One quad per light and node of its pyramid's level kWalkRoot (or its top), so that no
   // fragment walks more than (4^(kWalkRoot + 1) - 1) / 3 nodes: llvmpipe stops a shader
   // invocation's loops after 65,535 iterations in all.
@@ -70,19 +96,49 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
     program->SetUniformi("walkRootLevel", level);
     for (int k = 0; k < roots; ++k, ++part)
     {
-      if (part < progress.drawn || (drawn_here > 0 && clock.seconds() >= seconds))
+      if (part < progress.drawn)
       {
-        continue;  // drawn by an earlier call, or left to a later one
+        continue;  // drawn by an earlier call
       }
       const int root[2] = { k % cells.level_width(l, level), k / cells.level_width(l, level) };
       program->SetUniform2i("walkRoot", root);
-      quad.Render();
-      ++progress.drawn;
-      ++drawn_here;
-      if (std::isfinite(seconds))
+      if (!in_parts)
       {
-        glFinish();
+        quad.Render();
+        ++progress.drawn;
+        continue;
       }
+      state->vtkglEnable(GL_SCISSOR_TEST);
+      while (progress.rows_drawn < rows)
+      {
+        if (drawn_here > 0 && clock.seconds() >= seconds)
+        {
+          return;  // left to a later call
+        }
+        const int band = std::min(progress.band_rows, rows - progress.rows_drawn);
+        state->vtkglScissor(viewport[0], viewport[1] + progress.rows_drawn, viewport[2], band);
+        const double before = clock.seconds();
+        quad.Render();
+        glFinish();
+        progress.rows_drawn += band;
+        ++drawn_here;
+        const double took = clock.seconds() - before;
+        if (banded && took > progress.band_seconds)
+        {
+          progress.band_rows = std::max(
+            least_band, static_cast<int>(progress.band_rows * progress.band_seconds / took));
+        }
+        else if (banded && took < 0.25 * progress.band_seconds)
+        {
+          // Wider where receivers are cheap (far from the root's cells), but at most
+          // kWidestBand times the narrowest band yet: the costly rows may follow.
+          progress.band_rows = std::min(
+            { rows, 2 * progress.band_rows, kWidestBand * progress.narrowest_band });
+        }
+        progress.narrowest_band = std::min(progress.narrowest_band, progress.band_rows);
+      }
+      progress.rows_drawn = 0;
+      ++progress.drawn;
     }
   }
 }

@@ -173,7 +173,7 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
   Stopwatch clock;
   if (!context.resume)
   {
-    g.far_progress = FarFieldProgress{};
+    g.far_progress.restart();
     if (!g.cells.light(window, g.list, maps, g.cell_radius, g.settings.cell_samples,
           report.refined_cells, error))
     {
@@ -233,8 +233,9 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
     // A first part that has used its time leaves the whole far field to the next.
     if (context.resume || call.seconds() < context.seconds)
     {
-      add_far_field(state, *g.gather_quad, gather, g.cells, lights, far, g.far_progress,
-        context.seconds - call.seconds());
+      g.far_progress.band_seconds = context.seconds;
+      add_far_field(state, *g.gather_quad, gather, g.cells, lights, g.list.height(), far,
+        g.far_progress, context.seconds - call.seconds());
     }
     else
     {
@@ -251,7 +252,7 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
   if (!g.far_progress.done())
   {
     report.unfinished = true;
-    report.done_share = static_cast<double>(g.far_progress.drawn) / g.far_progress.total;
+    report.done_share = g.far_progress.share(g.list.height());
     return true;
   }
   const bool handed = resolve.from_list(window, positions, g.list.texel_buffer(), g.B, error);

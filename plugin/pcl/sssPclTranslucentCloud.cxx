@@ -114,7 +114,17 @@ TranslucentCloud::~TranslucentCloud() {
   if (window_) window_->RemoveObserver(frame_observer_);
 }
 
-void TranslucentCloud::frameDrawn() { drawn_inputs_ = inputsTime(); }
+namespace {
+double steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+    .count();
+}
+}  // namespace
+
+void TranslucentCloud::frameDrawn() {
+  drawn_inputs_ = inputsTime();
+  drawn_at_ = steady_seconds();
+}
 
 bool TranslucentCloud::setMaterial(const std::string& preset) {
   if (!material_->SetPreset(preset.c_str())) return false;
@@ -198,6 +208,10 @@ bool TranslucentCloud::refinementPartDue() const {
   return false;
 }
 
+void TranslucentCloud::refinePart() {
+  for (std::size_t i = 0; i < passes_.size(); ++i) passes_[i]->PrepareFrame(renderers_[i]);
+}
+
 vtkMTimeType TranslucentCloud::inputsTime() const {
   vtkMTimeType latest = std::max(actor_->GetMTime(), material_->GetMTime());
   for (const auto& pass : passes_) latest = std::max(latest, pass->GetMTime());
@@ -212,8 +226,12 @@ void TranslucentCloud::spinOnce(pcl::visualization::PCLVisualizer& viewer, int m
   }
   processPendingEvents(viewer.getRenderWindow()->GetInteractor());
   if (viewer.wasStopped()) return;  // not a closed window again
-  if (refinementPartDue() || inputsTime() > drawn_inputs_) {
+  if (inputsTime() > drawn_inputs_) {
     viewer.getRenderWindow()->Render();
+  } else if (refinementPartDue()) {
+    refinePart();
+    if (!refinementPending() || steady_seconds() - drawn_at_ >= 1.0)
+      viewer.getRenderWindow()->Render();
   } else {
     std::this_thread::sleep_for(std::chrono::milliseconds(std::max(milliseconds, 1)));
   }

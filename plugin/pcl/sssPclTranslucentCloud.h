@@ -80,13 +80,18 @@ class TranslucentCloud {
   bool refinementPending() const;
   bool refinementPreparing() const;
   bool refinementPartDue() const;
+  // Runs the next part of a pending refinement without drawing a frame
+  // (vtkSubsurfacePass::PrepareFrame on the handle's renderers; the window's next Render shows
+  // the refined B once the last part is done). Needs the window drawn once.
+  void refinePart();
   // PCLVisualizer::spinOnce for a window that refines, to call in its place in the
   // application's loop. While a refinement is pending it handles the events already queued
-  // (sssPclPendingEvents.h: PCL's spinOnce would wait up to a second between parts) and draws a
-  // frame only when one is due (the next part) or the handle's actor, material, lights or pass
-  // changed since its last frame; otherwise it waits `milliseconds`, so that neither the rest
-  // nor the bake's thread is spent redrawing the preview. With nothing pending it is PCL's
-  // spinOnce.
+  // (sssPclPendingEvents.h: PCL's spinOnce would wait up to a second between parts); when a
+  // part is due it runs it (refinePart) and draws a frame only for the last, or when the last
+  // frame is a second old (a status, an overlay); it draws one too when the handle's actor,
+  // material, lights or pass changed since the window's last frame; otherwise it waits
+  // `milliseconds`, so that neither the rest nor the bake's thread is spent redrawing the
+  // preview. With nothing pending it is PCL's spinOnce.
   void spinOnce(pcl::visualization::PCLVisualizer& viewer, int milliseconds = 1);
   // The pass's rest before it refines (vtkSubsurfacePass::SetRefinementRestSeconds): an
   // application that knows when its input rests sets it large and sets it to 0 for the frame
@@ -139,6 +144,7 @@ class TranslucentCloud {
   Quality quality_ = Quality::Balanced;
   bool attached_ = true;
   vtkMTimeType drawn_inputs_ = 0;  // inputsTime() at the window's last frame
+  double drawn_at_ = 0.0;  // steady-clock seconds at the window's last frame
   vtkWeakPointer<vtkRenderWindow> window_;  // the viewer's, observed for frameDrawn
   unsigned long frame_observer_ = 0;
 };
