@@ -13,7 +13,7 @@ namespace {
 // step to a cell that shares a face with the one before.
 TEST(HilbertOrder, StepsOnlyBetweenFaceNeighboursAndFillsAlignedBlocks) {
   const double cell = 1.0 / (1 << 21);  // the curve's cells over the unit cube
-  for (const Eigen::Vector3i corner : {Eigen::Vector3i(0, 0, 0), Eigen::Vector3i(8, 16, 40)}) {
+  for (const Eigen::Vector3i& corner : {Eigen::Vector3i(0, 0, 0), Eigen::Vector3i(8, 16, 40)}) {
     std::vector<std::pair<std::uint64_t, Eigen::Vector3i>> cells;
     for (int x = 0; x < 8; ++x)
       for (int y = 0; y < 8; ++y)
