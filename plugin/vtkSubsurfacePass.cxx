@@ -176,11 +176,24 @@ vtkSubsurfacePieces* vtkSubsurfacePass::GetPieces()
 
 void vtkSubsurfacePass::PrepareFrame(vtkRenderer* ren)
 {
+  if (this->RunSteps(ren, "PrepareFrame"))
+  {
+    this->Impl->Prepared = true;
+  }
+}
+
+void vtkSubsurfacePass::RunRefinementPart(vtkRenderer* ren)
+{
+  this->RunSteps(ren, "RunRefinementPart");
+}
+
+bool vtkSubsurfacePass::RunSteps(vtkRenderer* ren, const char* caller)
+{
   auto* window = ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
   if (!window)
   {
-    vtkErrorMacro(<< "PrepareFrame needs a renderer in an OpenGL render window");
-    return;
+    vtkErrorMacro(<< caller << " needs a renderer in an OpenGL render window");
+    return false;
   }
   window->MakeCurrent();
   std::vector<vtkProp*> props;
@@ -197,7 +210,7 @@ void vtkSubsurfacePass::PrepareFrame(vtkRenderer* ren)
   state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   this->GatherLights(ren);
   this->UpdateTranslucentActors(&state, window);
-  this->Impl->Prepared = true;
+  return true;
 }
 
 void vtkSubsurfacePass::GatherLights(vtkRenderer* ren)

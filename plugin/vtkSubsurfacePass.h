@@ -203,6 +203,14 @@ public:
    */
   void PrepareFrame(vtkRenderer* renderer);
 
+  /**
+   * Runs steps 1-2 for the renderer's visible translucent actors as a frame would, without
+   * drawing one: with refinement, the next part when IsRefinementPartDue(). Unlike PrepareFrame,
+   * the next Render runs its own steps (a change made meanwhile is drawn), so an application can
+   * run the parts between its frames and draw when it likes. Not with pieces.
+   */
+  void RunRefinementPart(vtkRenderer* renderer);
+
   ///@{
   /**
    * Refinement (default off): a frame whose lights, material or geometry changed shows B from
@@ -215,9 +223,9 @@ public:
    * are measured; with 0, one root's over every receiver), and the last shows it. Until then
    * every frame (a camera move, an overlay's update) shows the preview. An application keeps
    * rendering while GetRefinementPending() is true and its input rests, or runs the parts with
-   * PrepareFrame between its frames when IsRefinementPartDue() says one is due, drawing only
-   * when it likes (the last part's B shows in the next frame): a frame drawn for nothing redraws
-   * the preview and takes processor time from the parts and the bake's thread. A bake (new geometry, material or settings) runs its CPU part (the cells
+   * RunRefinementPart between its frames when IsRefinementPartDue() says one is due, drawing
+   * only when it likes (the last part's B shows in the next frame): a frame drawn for nothing
+   * redraws the preview and takes processor time from the parts and the bake's thread. A bake (new geometry, material or settings) runs its CPU part (the cells
    * and the near-field table's weights, most of its time) on a thread of its own meanwhile, and
    * its uploads in the first frame that finds it done. Each method keeps its own bake. Off with
    * pieces: there every frame is refined.
@@ -384,6 +392,9 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Impl;
 
+  // Steps 1-2 for the renderer's visible translucent actors, outside Render (PrepareFrame,
+  // RunRefinementPart: `caller` names it in the error); false without an OpenGL window.
+  bool RunSteps(vtkRenderer* ren, const char* caller);
   // The steps of Render, in order.
   // The renderer's switched-on lights into Impl (world frame).
   void GatherLights(vtkRenderer* ren);

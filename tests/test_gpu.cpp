@@ -181,14 +181,15 @@ std::vector<Rgb> render_until_refined(GpuScene& scene, const std::vector<Rgb>& p
 // runs on its thread, and then the settings' B (as a pass without refinement draws it), the
 // preview's error being the metric's between the two; once baked, a light change rested is
 // refined by the frames that follow, with no wait; a light that goes back to the settled one
-// shows the settled B at once.
+// shows the settled B at once; a frame after a part run between frames runs its own steps.
 TEST(GpuRefinement, PreviewFirstThenTheSettingsBAndTheMeasuredError) {
   SurfelCloud sphere = make_sphere(10.0, 0.5);
   sphere.validate();
   const Material milk = Material::preset("skimmilk");
   const std::vector<Light> front{{Eigen::Vector3d(1, 1, 1), 1.0}};
   const std::vector<Light> side{{Eigen::Vector3d(-1, 1, 0.5), 1.0}};
-  GpuScene refining(sphere, milk, front), paper(sphere, milk, side), settled(sphere, milk, front);
+  GpuScene refining(sphere, milk, front), paper(sphere, milk, side), settled(sphere, milk, front),
+    settled_side(sphere, milk, side);
   refining.pass->RefinementOn();
   paper.pass->SetKernelStrategyToPaper();
   const double tolerance = 1e-5;  // the same steps in another context: float rounding only
@@ -233,16 +234,30 @@ TEST(GpuRefinement, PreviewFirstThenTheSettingsBAndTheMeasuredError) {
   const std::vector<Rgb> preview_again = refining.render_B();
   EXPECT_TRUE(refining.pass->GetRefinementPending());
   refining.pass->SetRefinementRestSeconds(0.0);
-  render_until_refined(refining, preview_again, parts, waiting);
+  const std::vector<Rgb> refined_side = render_until_refined(refining, preview_again, parts, waiting);
   EXPECT_FALSE(refining.pass->GetRefinementPending()) << "rested: refined";
   EXPECT_EQ(waiting, 0) << "baked already";
   EXPECT_EQ(refining.pass->GetIlluminationRuns(), illumination_runs + 1);
+
+  EXPECT_LT(largest_difference(refined_side, settled_side.render_B()), tolerance);
+
+  // A part run between frames (RunRefinementPart) leaves the next frame its own steps: a light
+  // change made after it is drawn at once, as its preview.
+  refining.set_lights(front);
+  refining.render_B();
+  ASSERT_TRUE(refining.pass->GetRefinementPending());
+  refining.pass->RunRefinementPart(refining.renderer);
+  refining.set_lights(side);
+  EXPECT_LT(largest_difference(refining.render_B(), preview_side), tolerance)
+    << "the frame after a part between frames shows the light changed after it";
+  EXPECT_TRUE(refining.pass->GetRefinementPending());
 }
 
 // Refinement in parts: with no time a frame, the frames at rest wait for the bake's thread, then
 // each draws one more part of the far field (its walk from one root of the source pyramid), the
 // preview stays on screen until the last, and the B it then shows is the one a pass without
-// refinement computes at once; the same in bands with a short frame time.
+// refinement computes at once; the same when refinement is turned off between the bands a
+// short frame time draws.
 TEST(GpuRefinement, InPartsOverFramesGivesTheSameB) {
   SurfelCloud sphere = make_sphere(10.0, 0.15);  // about 56,000 points: 4 walk roots
   sphere.validate();
@@ -271,22 +286,32 @@ TEST(GpuRefinement, InPartsOverFramesGivesTheSameB) {
   EXPECT_EQ(refining.pass->GetBakeRuns(), 1) << "the bake, whose uploads took a frame of their own";
   EXPECT_GT(refining.pass->GetLastBakeSeconds(), 0.0);
 
-  // With a short frame time, each root's sum is drawn over bands of the surfel list's rows,
-  // narrowed to that time: more parts than roots, each receiver summing the same roots in the
-  // same order, so B is again the one computed at once.
+  // With a tiny frame time, each root's sum is drawn over bands of the surfel list's rows, a
+  // band a frame, narrowed to 1/64 of the rows after the first; refinement turned off within a
+  // root's bands finishes the light move at once, the rest of that root over the rows not yet
+  // drawn: each receiver sums the same roots in the same order, so B is again the one computed
+  // at once.
   const std::vector<Light> side{{Eigen::Vector3d(-1, 1, 0.5), 1.0}};
   refining.set_lights(side);
   settled.set_lights(side);
-  refining.pass->SetRefinementFrameSeconds(0.02);
-  const std::vector<Rgb> side_preview = refining.render_B();
-  const std::vector<Rgb> side_B = render_until_refined(refining, side_preview, shares, waiting);
-  ASSERT_FALSE(refining.pass->GetRefinementPending());
-  std::printf("[ gpu refinement ] at 20 ms a frame, the far field in %zu parts\n",
-              shares.size() + 1);
-  EXPECT_EQ(waiting, 0) << "baked already";
-  EXPECT_GT(shares.size(), 8u) << "no more parts than twice the walk roots: no bands";
-  for (std::size_t i = 1; i < shares.size(); ++i) EXPECT_GT(shares[i], shares[i - 1]);
-  EXPECT_LT(largest_difference(side_B, settled.render_B()), 1e-5);
+  refining.pass->SetRefinementFrameSeconds(1e-4);
+  refining.render_B();  // the preview
+  refining.render_B();  // the light map, the cells and the near field
+  std::vector<double> band_shares;
+  for (int frame = 0; frame < 6; ++frame) {
+    refining.render_B();
+    ASSERT_TRUE(refining.pass->GetRefinementPending());
+    band_shares.push_back(refining.pass->GetRefinedShare());
+  }
+  for (std::size_t i = 1; i < band_shares.size(); ++i)
+    EXPECT_GT(band_shares[i], band_shares[i - 1]) << "a band a frame";
+  const double roots_done = 4.0 * band_shares.back();  // 4 roots
+  std::printf("[ gpu refinement ] in bands: %.3f of the far field after %zu frames\n",
+              band_shares.back(), band_shares.size());
+  ASSERT_GT(roots_done - std::floor(roots_done), 0.0) << "not within a root's bands";
+  refining.pass->RefinementOff();
+  EXPECT_LT(largest_difference(refining.render_B(), settled.render_B()), 1e-5);
+  EXPECT_FALSE(refining.pass->GetRefinementPending());
 }
 
 // Refinement on with no rest, and two frames: the preview, then the first at rest, which starts

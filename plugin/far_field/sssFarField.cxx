@@ -75,13 +75,21 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
   const int least_band = std::max(1, rows / kMostBandsPerQuad);
   if (progress.band_rows <= 0 || !banded)
   {
-    progress.band_rows = progress.narrowest_band = rows;
+    progress.band_rows = rows;
+  }
+  if (progress.narrowest_band <= 0)
+  {
+    progress.narrowest_band = progress.band_rows;
   }
   vtkOpenGLState::ScopedglScissor scissor_saved(state);
   vtkOpenGLState::ScopedglEnableDisable scissor_test_saved(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglEnable(GL_SCISSOR_TEST);
   GLint viewport[4];
   state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  if (in_parts)
+  {
+    glFinish();  // the steps before, so that the first band's time is its own
+  }
   // One quad per light and node of its pyramid's level kWalkRoot (or its top), so that no
   // fragment walks more than (4^(kWalkRoot + 1) - 1) / 3 nodes: llvmpipe stops a shader
   // invocation's loops after 65,535 iterations in all.
@@ -102,13 +110,7 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
       }
       const int root[2] = { k % cells.level_width(l, level), k / cells.level_width(l, level) };
       program->SetUniform2i("walkRoot", root);
-      if (!in_parts)
-      {
-        quad.Render();
-        ++progress.drawn;
-        continue;
-      }
-      state->vtkglEnable(GL_SCISSOR_TEST);
+      // The rows left of this quad (all of them unless an earlier call drew some), in bands.
       while (progress.rows_drawn < rows)
       {
         if (drawn_here > 0 && clock.seconds() >= seconds)
@@ -119,9 +121,13 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
         state->vtkglScissor(viewport[0], viewport[1] + progress.rows_drawn, viewport[2], band);
         const double before = clock.seconds();
         quad.Render();
-        glFinish();
         progress.rows_drawn += band;
         ++drawn_here;
+        if (!in_parts)
+        {
+          continue;
+        }
+        glFinish();
         const double took = clock.seconds() - before;
         if (banded && took > progress.band_seconds)
         {
@@ -131,7 +137,7 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
         else if (banded && took < 0.25 * progress.band_seconds)
         {
           // Wider where receivers are cheap (far from the root's cells), but at most
-          // kWidestBand times the narrowest band yet: the costly rows may follow.
+          // kWidestBand times this move's narrowest: the costly rows may follow.
           progress.band_rows = std::min(
             { rows, 2 * progress.band_rows, kWidestBand * progress.narrowest_band });
         }

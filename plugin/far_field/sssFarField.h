@@ -38,14 +38,15 @@ struct FarFieldProgress
   int total = 0;
   int rows_drawn = 0;  // of quad `drawn`
   int band_rows = 0;   // 0: whole quads
-  int narrowest_band = 0;  // the narrowest band_rows yet
+  int narrowest_band = 0;  // the narrowest band_rows in this light move
   double band_seconds = 0.0;  // about what a band should take: a frame's time for the far field
   bool done() const { return drawn >= total; }
-  // For a new light move: nothing drawn, the bands as wide as the narrowest of earlier moves.
+  // For a new light move: nothing drawn, the bands as wide as the last move's narrowest.
   void restart()
   {
     drawn = total = rows_drawn = 0;
     band_rows = narrowest_band;
+    narrowest_band = 0;
   }
   // The share done, counting the rows of the quad under way (`rows`: the surfel list's).
   double share(int rows) const;
@@ -56,12 +57,12 @@ int far_field_parts(const LitCells& cells, int lights);
 
 // Adds the far field of `lights` lights into the bound target with `program` (a quad over the
 // surfel list, `rows` high, that includes far_field.glsl), blending by addition: the quads
-// from progress.drawn on, all of them whole with infinite `seconds`; else in bands of rows, the
-// first and then others only while fewer than that many seconds have passed (waiting for the
-// GPU after each band to know), the rest left to a later call. A band that took longer than
-// progress.band_seconds narrows the bands that follow in proportion; one under a quarter of it
-// doubles them, up to a few times the narrowest yet (a root's cells, and so the receivers that
-// cost most, lie in a few rows).
+// from progress.drawn on (of the first, the rows from progress.rows_drawn on), all of them with
+// infinite `seconds`; else in bands of rows, the first and then others only while fewer than
+// that many seconds have passed (waiting for the GPU after each band to know), the rest left to
+// a later call. A band that took longer than progress.band_seconds narrows the bands that
+// follow in proportion; one under a quarter of it doubles them, up to a few times the narrowest
+// in this light move (a root's cells, and so the receivers that cost most, lie in a few rows).
 void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
   const LitCells& cells, int lights, int rows, const FarFieldSettings& settings,
   FarFieldProgress& progress, double seconds);

@@ -4,11 +4,13 @@
 #include <pcl/visualization/pcl_visualizer.h>
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkPolyData.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
@@ -209,13 +211,28 @@ bool TranslucentCloud::refinementPartDue() const {
 }
 
 void TranslucentCloud::refinePart() {
-  for (std::size_t i = 0; i < passes_.size(); ++i) passes_[i]->PrepareFrame(renderers_[i]);
+  for (std::size_t i = 0; i < passes_.size(); ++i) passes_[i]->RunRefinementPart(renderers_[i]);
 }
 
 vtkMTimeType TranslucentCloud::inputsTime() const {
   vtkMTimeType latest = std::max(actor_->GetMTime(), material_->GetMTime());
   for (const auto& pass : passes_) latest = std::max(latest, pass->GetMTime());
-  for (const auto& light : lights_) latest = std::max(latest, light->GetMTime());
+  vtkRendererCollection* renderers = viewer_.getRendererCollection();
+  vtkCollectionSimpleIterator it;
+  renderers->InitTraversal(it);
+  while (vtkRenderer* renderer = renderers->GetNextRenderer(it)) {
+    latest = std::max(latest, renderer->GetMTime());
+    if (renderer->IsActiveCameraCreated())
+      latest = std::max(latest, renderer->GetActiveCamera()->GetMTime());
+    vtkCollectionSimpleIterator light_it;
+    renderer->GetLights()->InitTraversal(light_it);
+    while (vtkLight* light = renderer->GetLights()->GetNextLight(light_it))
+      latest = std::max(latest, light->GetMTime());
+    vtkCollectionSimpleIterator prop_it;
+    renderer->GetViewProps()->InitTraversal(prop_it);
+    while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(prop_it))
+      latest = std::max(latest, prop->GetMTime());
+  }
   return latest;
 }
 

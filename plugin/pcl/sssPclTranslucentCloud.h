@@ -70,26 +70,27 @@ class TranslucentCloud {
   void setQuality(Quality quality);
   Quality quality() const { return quality_; }
   // Refinement (vtkSubsurfacePass::SetRefinement; off unless set): a change of the light or
-  // the material is shown first from the 2005 paper's method, and the frames drawn once the
-  // input rests compute the quality's B, a part each, and show it. refinementPending(): a
-  // preview is on screen, so keep rendering while the input rests. refinementPreparing(): the
-  // bake's CPU part runs on a thread meanwhile (vtkSubsurfacePass::GetRefinementPreparing).
-  // refinementPartDue(): a frame drawn now would take the refinement further (the input has
-  // rested, no bake's thread is at work; vtkSubsurfacePass::IsRefinementPartDue, read live).
+  // the material is shown first from the 2005 paper's method, and once the input rests the
+  // quality's B is computed in parts and shown (spinOnce below runs them). refinementPending():
+  // a preview is on screen. refinementPreparing(): the bake's CPU part runs on a thread
+  // meanwhile (vtkSubsurfacePass::GetRefinementPreparing). refinementPartDue(): a part would
+  // take the refinement further now (the input has rested, no bake's thread is at work;
+  // vtkSubsurfacePass::IsRefinementPartDue, read live).
   void setRefinement(bool on);
   bool refinementPending() const;
   bool refinementPreparing() const;
   bool refinementPartDue() const;
   // Runs the next part of a pending refinement without drawing a frame
-  // (vtkSubsurfacePass::PrepareFrame on the handle's renderers; the window's next Render shows
-  // the refined B once the last part is done). Needs the window drawn once.
+  // (vtkSubsurfacePass::RunRefinementPart on the handle's renderers; the window's next Render
+  // shows the refined B once the last part is done). Needs the window drawn once.
   void refinePart();
   // PCLVisualizer::spinOnce for a window that refines, to call in its place in the
   // application's loop. While a refinement is pending it handles the events already queued
   // (sssPclPendingEvents.h: PCL's spinOnce would wait up to a second between parts); when a
   // part is due it runs it (refinePart) and draws a frame only for the last, or when the last
-  // frame is a second old (a status, an overlay); it draws one too when the handle's actor,
-  // material, lights or pass changed since the window's last frame; otherwise it waits
+  // frame is a second old (a status, an overlay); it draws one too when anything in the
+  // viewer's renderers changed since the window's last frame (the handle's actor, material and
+  // pass, a renderer, its camera, lights or props); otherwise it waits
   // `milliseconds`, so that neither the rest nor the bake's thread is spent redrawing the
   // preview. With nothing pending it is PCL's spinOnce.
   void spinOnce(pcl::visualization::PCLVisualizer& viewer, int milliseconds = 1);
@@ -136,7 +137,8 @@ class TranslucentCloud {
   vtkSmartPointer<vtkTranslucentMaterial> material_;
   std::vector<vtkSmartPointer<vtkSubsurfacePass>> passes_;  // one per renderer
   std::vector<vtkSmartPointer<vtkLight>> lights_;
-  // The latest modification time of the actor, its material, the passes and the lights.
+  // The latest modification time of the actor, its material, the passes, and the viewer's
+  // renderers with their cameras, lights and props.
   vtkMTimeType inputsTime() const;
   // After each frame of the window: what it drew is of inputsTime().
   void frameDrawn();
