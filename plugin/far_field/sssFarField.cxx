@@ -52,6 +52,22 @@ double FarFieldProgress::share(int rows) const
   return (drawn + static_cast<double>(rows_drawn) / std::max(rows, 1)) / total;
 }
 
+void FarFieldProgress::fit_band(double took, int rows)
+{
+  if (took > band_seconds)
+  {
+    band_rows = std::max(std::max(1, rows / kMostBandsPerQuad),
+      static_cast<int>(band_rows * band_seconds / took));
+  }
+  else if (took < 0.25 * band_seconds)
+  {
+    // Wider where receivers are cheap (far from the root's cells), but at most kWidestBand
+    // times this move's narrowest: the costly rows may follow.
+    band_rows = std::min({ rows, 2 * band_rows, kWidestBand * narrowest_band });
+  }
+  narrowest_band = std::min(narrowest_band, band_rows);
+}
+
 void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
   const LitCells& cells, int lights, int rows, const FarFieldSettings& settings,
   FarFieldProgress& progress, double seconds)
@@ -72,7 +88,6 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
   const bool in_parts = std::isfinite(seconds);
   // Bands sized to the frame's time; with none, whole quads (a part a frame).
   const bool banded = in_parts && progress.band_seconds > 0.0;
-  const int least_band = std::max(1, rows / kMostBandsPerQuad);
   if (progress.band_rows <= 0 || !banded)
   {
     progress.band_rows = rows;
@@ -128,20 +143,10 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
           continue;
         }
         glFinish();
-        const double took = clock.seconds() - before;
-        if (banded && took > progress.band_seconds)
+        if (banded)
         {
-          progress.band_rows = std::max(
-            least_band, static_cast<int>(progress.band_rows * progress.band_seconds / took));
+          progress.fit_band(clock.seconds() - before, rows);
         }
-        else if (banded && took < 0.25 * progress.band_seconds)
-        {
-          // Wider where receivers are cheap (far from the root's cells), but at most
-          // kWidestBand times this move's narrowest: the costly rows may follow.
-          progress.band_rows = std::min(
-            { rows, 2 * progress.band_rows, kWidestBand * progress.narrowest_band });
-        }
-        progress.narrowest_band = std::min(progress.narrowest_band, progress.band_rows);
       }
       progress.rows_drawn = 0;
       ++progress.drawn;

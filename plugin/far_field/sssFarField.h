@@ -50,6 +50,9 @@ struct FarFieldProgress
   }
   // The share done, counting the rows of the quad under way (`rows`: the surfel list's).
   double share(int rows) const;
+  // After a band that took `took` seconds: narrower in proportion when it took longer than
+  // band_seconds, twice as wide (up to a few times this move's narrowest) when under a quarter.
+  void fit_band(double took, int rows);
 };
 
 // The quads add_far_field draws for `lights` lights.
@@ -60,9 +63,8 @@ int far_field_parts(const LitCells& cells, int lights);
 // from progress.drawn on (of the first, the rows from progress.rows_drawn on), all of them with
 // infinite `seconds`; else in bands of rows, the first and then others only while fewer than
 // that many seconds have passed (waiting for the GPU after each band to know), the rest left to
-// a later call. A band that took longer than progress.band_seconds narrows the bands that
-// follow in proportion; one under a quarter of it doubles them, up to a few times the narrowest
-// in this light move (a root's cells, and so the receivers that cost most, lie in a few rows).
+// a later call, the bands fitted to progress.band_seconds as they are timed (fit_band; a root's
+// cells, and so the receivers that cost most, lie in a few rows).
 void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
   const LitCells& cells, int lights, int rows, const FarFieldSettings& settings,
   FarFieldProgress& progress, double seconds);

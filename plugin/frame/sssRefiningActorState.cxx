@@ -55,8 +55,7 @@ bool RefiningActorState::update(const StepContext& context, const ActorInputs& a
     return true;
   }
   shown = Shown::Refining;
-  if (std::chrono::duration<double>(Clock::now() - preview_inputs_since_).count() <
-    rule.rest_seconds)
+  if (!rested(rule))
   {
     return true;  // still moving, as far as we know: the preview stays
   }
@@ -86,12 +85,15 @@ bool RefiningActorState::update(const StepContext& context, const ActorInputs& a
   return true;
 }
 
+bool RefiningActorState::rested(const RefinementRule& rule) const
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - preview_inputs_since_)
+           .count() >= rule.rest_seconds;
+}
+
 bool RefiningActorState::part_due(const RefinementRule& rule) const
 {
-  using Clock = std::chrono::steady_clock;
-  return rule.on && preview_shown_ && !settled_failed_ &&
-    std::chrono::duration<double>(Clock::now() - preview_inputs_since_).count() >=
-    rule.rest_seconds &&
+  return rule.on && preview_shown_ && !settled_failed_ && rested(rule) &&
     !settled_.preparation_under_way();
 }
 

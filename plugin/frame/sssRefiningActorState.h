@@ -65,6 +65,8 @@ public:
 private:
   // The coarser method's settings: the paper's, at its defaults.
   static QualitySettings preview_settings();
+  // Whether the preview's inputs have not changed for the rule's rest_seconds.
+  bool rested(const RefinementRule& rule) const;
 
   TranslucentActorState settled_;
   TranslucentActorState preview_;

@@ -116,16 +116,9 @@ TranslucentCloud::~TranslucentCloud() {
   if (window_) window_->RemoveObserver(frame_observer_);
 }
 
-namespace {
-double steady_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-    .count();
-}
-}  // namespace
-
 void TranslucentCloud::frameDrawn() {
   drawn_inputs_ = inputsTime();
-  drawn_at_ = steady_seconds();
+  drawn_at_ = std::chrono::steady_clock::now();
 }
 
 bool TranslucentCloud::setMaterial(const std::string& preset) {
@@ -247,7 +240,8 @@ void TranslucentCloud::spinOnce(pcl::visualization::PCLVisualizer& viewer, int m
     viewer.getRenderWindow()->Render();
   } else if (refinementPartDue()) {
     refinePart();
-    if (!refinementPending() || steady_seconds() - drawn_at_ >= 1.0)
+    const bool status_due = std::chrono::steady_clock::now() - drawn_at_ >= std::chrono::seconds(1);
+    if (!refinementPending() || status_due)
       viewer.getRenderWindow()->Render();
   } else {
     std::this_thread::sleep_for(std::chrono::milliseconds(std::max(milliseconds, 1)));

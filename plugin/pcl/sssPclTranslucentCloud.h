@@ -7,6 +7,7 @@
 #include <vtkWeakPointer.h>
 
 #include <Eigen/Core>
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -146,7 +147,7 @@ class TranslucentCloud {
   Quality quality_ = Quality::Balanced;
   bool attached_ = true;
   vtkMTimeType drawn_inputs_ = 0;  // inputsTime() at the window's last frame
-  double drawn_at_ = 0.0;  // steady-clock seconds at the window's last frame
+  std::chrono::steady_clock::time_point drawn_at_;  // the window's last frame
   vtkWeakPointer<vtkRenderWindow> window_;  // the viewer's, observed for frameDrawn
   unsigned long frame_observer_ = 0;
 };
