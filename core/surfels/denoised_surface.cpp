@@ -108,23 +108,32 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
   const int quadric_terms = m >= 12 ? 6 : 3;
   Eigen::Matrix<double, 6, 1> coefficients = Eigen::Matrix<double, 6, 1>::Zero();
   // Least squares of the first `terms` coefficients with the weights; false when singular.
+  // A plane (3 terms) builds only its 3 x 3 normal equations.
   const auto solve = [&](int terms) {
-    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-    for (std::size_t k = 0; k < m; ++k) {
-      if (weight[k] <= 0.0) continue;
-      normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
-      rhs.noalias() += weight[k] * height[k] * basis[k];
-    }
     coefficients.setZero();
     if (terms == 6) {
+      Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+      Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+      for (std::size_t k = 0; k < m; ++k) {
+        if (weight[k] <= 0.0) continue;
+        normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
+        rhs.noalias() += weight[k] * height[k] * basis[k];
+      }
       const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(normal_matrix);
       if (solver.info() != Eigen::Success) return false;
       coefficients = solver.solve(rhs);
     } else {
-      const Eigen::LDLT<Eigen::Matrix3d> solver(normal_matrix.topLeftCorner<3, 3>());
+      Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+      for (std::size_t k = 0; k < m; ++k) {
+        if (weight[k] <= 0.0) continue;
+        const auto plane_basis = basis[k].head<3>();
+        normal_matrix.noalias() += weight[k] * plane_basis * plane_basis.transpose();
+        rhs.noalias() += weight[k] * height[k] * plane_basis;
+      }
+      const Eigen::LDLT<Eigen::Matrix3d> solver(normal_matrix);
       if (solver.info() != Eigen::Success) return false;
-      coefficients.head<3>() = solver.solve(rhs.head<3>());
+      coefficients.head<3>() = solver.solve(rhs);
     }
     if (!coefficients.allFinite()) return false;
     for (std::size_t k = 0; k < m; ++k) residual[k] = height[k] - basis[k].dot(coefficients);
