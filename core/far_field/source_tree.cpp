@@ -164,7 +164,7 @@ void SourceTree::add_sample(int k, const Eigen::Vector3d& x, Rgb& sum) const {
   const double radius = edge_u_[k].norm();  // the patch is a disc of this radius
   // A small disc far from both poles' planar minimum distances (where Rd_from_distances
   // clamps) is summed whole about its centre: second moment radius^2 / 4 along each tangent.
-  bool whole = !(radius > 0.5 * piece);
+  bool whole = !(radius > 0.5 * piece) && !(radius > 0.5 * distance);
   for (int c = 0; c < 3 && whole; ++c) {
     const DipoleChannel& ch = dipole_.channel[c];
     whole = (p - ch.z_r * n - x).norm() > ch.z_r + radius &&
@@ -184,10 +184,14 @@ void SourceTree::add_sample(int k, const Eigen::Vector3d& x, Rgb& sum) const {
     return;
   }
   // Equal-area rings about `piece` wide, each with points `piece` apart at even angles: a
-  // rule whose first moment vanishes and whose second is the disc's.
+  // rule whose first moment vanishes and whose second is the disc's. Points nearer to x than
+  // to p are not the patch's (source_tree.h): the others share its power.
   const Eigen::Vector3d u = edge_u_[k] / radius, v = edge_v_[k] / radius;
   const int rings = std::max(1, static_cast<int>(std::ceil(radius / piece)));
   int points = 0;
+  Rgb patch{0.0, 0.0, 0.0};
+  double kept = 0.0;
+  bool clipped = false;
   for (int r = 0; r < rings && points < kMaxPieces; ++r) {
     const double rho = radius * std::sqrt((r + 0.5) / rings);
     const int m = std::max(3, static_cast<int>(std::ceil(2.0 * kPi * rho / piece)));
@@ -195,14 +199,20 @@ void SourceTree::add_sample(int k, const Eigen::Vector3d& x, Rgb& sum) const {
     for (int j = 0; j < m; ++j, ++points) {
       const double angle = 2.0 * kPi * (j + 0.5 * (r % 2)) / m;
       const Eigen::Vector3d q = p + rho * (std::cos(angle) * u + std::sin(angle) * v);
+      if ((q - x).norm() < rho) {
+        clipped = true;
+        continue;
+      }
+      kept += share;
       for (int c = 0; c < 3; ++c) {
         const DipoleChannel& ch = dipole_.channel[c];
         const double d_r = (q - ch.z_r * n - x).norm();
         const double d_v = (q + ch.z_v * n - x).norm();
-        sum[c] += share * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
+        patch[c] += share * power_[k][c] * ch.Rd_from_distances(d_r, d_v);
       }
     }
   }
+  for (int c = 0; c < 3; ++c) sum[c] += clipped && kept > 0.0 ? patch[c] / kept : patch[c];
 }
 
 Rgb SourceTree::B(const Eigen::Vector3d& x, double beyond) const {

@@ -1,7 +1,9 @@
 // Hierarchical sum of eq. 16/17 over lit source elements: a binary tree over the sources,
 // whose far nodes are summed by a second-order expansion of the dipole around each node's
 // centroid (a treecode), and whose near leaves are evaluated source by source, splitting a
-// source's patch when it is coarser than the kernel's local scale there.
+// source's patch when it is coarser than the kernel's local scale there. Receivers are
+// surfels, whose cells no other surfel's cell reaches into (Voronoi cells, surfel_cells.h): a
+// patch is taken only on its own point's side of the bisector with the receiver.
 #pragma once
 
 #include <Eigen/Core>

@@ -16,7 +16,7 @@
 namespace sss {
 
 // Raise when the file layout or what render_reference computes changes: old files then miss.
-constexpr std::uint32_t kReferenceCacheVersion = 11;
+constexpr std::uint32_t kReferenceCacheVersion = 12;
 
 // What identifies one reference result.
 struct ReferenceKey {

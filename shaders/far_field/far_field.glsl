@@ -8,8 +8,10 @@
 // within sizeBoundReach), and x lies beyond the clamp of every pole by the poles' spread
 // (secondOrderHolds); a cell wider than a quarter of its distance from x (where
 // the spacing is coarse for the near-field table's reach, as in the far rows of a Kinect scan)
-// by a ring rule over its disc (cellRd). The GPU form of the CPU reference's source tree
-// (core/far_field/source_tree.h). Needs dipole.glsl.
+// by a ring rule over its disc (cellRd). x is a surfel, so no other surfel's cell reaches
+// nearer to x than to its own surfel (cells are Voronoi cells): a disc is taken only on its
+// surfel's side of the bisector with x, and a cell beyond twice supportRadius adds nothing. The
+// GPU form of the CPU reference's source tree (core/far_field/source_tree.h). Needs dipole.glsl.
 
 uniform sampler2D sourcePoint;        // xyz: power-weighted mean point, w: summed power
 uniform sampler2D sourcePower;        // rgb: E dA
@@ -34,8 +36,9 @@ const int wideCellsPerWalk = 16;  // most cells a walk sums by cellRd; the rest 
 // rings about a piece wide (max(z_r / 2, d / 4), and no finer than the disc's area over
 // cellRulePieces), each with points a piece apart at even angles: a rule whose first moment
 // vanishes and whose second is the disc's (at most about 100 points), as the CPU reference sums a
-// near source (core/far_field/source_tree.cpp add_sample). For the cells near x whose disc is too
-// wide for the second-order expansion.
+// near source (core/far_field/source_tree.cpp add_sample). Points nearer to x than to p are not
+// the cell's: the others share its power. For the cells near x whose disc is too wide for the
+// second-order expansion.
 vec3 cellRd(vec3 p, vec3 n, float r, vec3 x, float d)
 {
   float piece = max(max(0.5 * min(zR.r, min(zR.g, zR.b)), 0.25 * d),
@@ -45,6 +48,8 @@ vec3 cellRd(vec3 p, vec3 n, float r, vec3 x, float d)
   vec3 v = cross(n, u);
   int rings = max(1, int(ceil(r / piece)));
   vec3 sum = vec3(0.0);
+  float kept = 0.0;  // the shares of the points on p's side
+  bool clipped = false;
   for (int ring = 0; ring < rings; ++ring)
   {
     float rho = r * sqrt((float(ring) + 0.5) / float(rings));
@@ -53,10 +58,19 @@ vec3 cellRd(vec3 p, vec3 n, float r, vec3 x, float d)
     for (int j = 0; j < m; ++j)
     {
       float angle = 6.283185307 * (float(j) + 0.5 * float(ring % 2)) / float(m);
-      sum += share * dipoleRd(p + rho * (cos(angle) * u + sin(angle) * v), n, x);
+      vec3 q = p + rho * (cos(angle) * u + sin(angle) * v);
+      if (distance(q, x) >= rho)
+      {
+        sum += share * dipoleRd(q, n, x);
+        kept += share;
+      }
+      else
+      {
+        clipped = true;
+      }
     }
   }
-  return sum;
+  return clipped && kept > 0.0 ? sum / kept : sum;
 }
 
 // A node (xy: texel in its level, z: level) in one word for the walk's stack, a third of the
@@ -104,7 +118,8 @@ vec3 farFieldB(vec3 x, int light, ivec3 root)
     vec4 normal = texelFetch(sourceNormal, texel, 0);
     float size = normal.w;
     float d = distance(x, point.xyz);
-    if (d - size > supportRadius || d + size < farFrom || (level == 0 && d < farFrom))
+    if (d - size > supportRadius || d + size < farFrom ||
+      (level == 0 && (d < farFrom || 0.5 * d > supportRadius)))
     {
       continue;
     }
