@@ -39,6 +39,13 @@ namespace {
 // Tukey's biweight constant: tau = 4.685 sigma keeps 95 % of a least-squares fit's efficiency
 // under Gaussian noise (3 sigma measured the noise 20 % low).
 constexpr double kTukey = 4.685;
+// A quadric is fitted only where the variance of its slope at the point (from the plane's
+// inliers' spread) stays below this many times a plane's. Beyond, its terms across follow what
+// the neighbours do not constrain: on a floor seen at grazing incidence, whose rows lie far apart
+// and whose range noise moves each row's points along the scanner's cone, the quadric takes the
+// cone and tilts by the grazing angle. Fits beside a box's edge reach tens (10 there bent them);
+// 1000 leaves the Kinect scenes' fits all but unchanged.
+constexpr double kQuadricSlopeVariance = 1000.0;
 
 struct PatchFit {
   Eigen::Vector3d position, normal;
@@ -105,7 +112,7 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
     fit.normal.setZero();
     return fit;
   }
-  const int quadric_terms = m >= 12 ? 6 : 3;
+  int quadric_terms = m >= 12 ? 6 : 3;
   Eigen::Matrix<double, 6, 1> coefficients = Eigen::Matrix<double, 6, 1>::Zero();
   // Least squares of the first `terms` coefficients with the weights; false when singular.
   // A plane (3 terms) builds only its 3 x 3 normal equations.
@@ -159,12 +166,26 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
     }
     return kept;
   };
+  // Whether the quadric's slope at p, weighted as the last plane was, varies at most
+  // kQuadricSlopeVariance times as much as the plane's ((A^T W A)^-1 of each).
+  const auto quadric_slope_holds = [&]() {
+    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+    for (std::size_t k = 0; k < m; ++k)
+      if (weight[k] > 0.0) normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
+    const Eigen::Matrix3d plane_inverse = normal_matrix.topLeftCorner<3, 3>().inverse();
+    const Eigen::Matrix<double, 6, 6> quadric_inverse = normal_matrix.inverse();
+    const double plane_slope = plane_inverse(1, 1) + plane_inverse(2, 2);
+    const double quadric_slope = quadric_inverse(1, 1) + quadric_inverse(2, 2);
+    return std::isfinite(quadric_slope) && quadric_slope > 0.0 &&
+           quadric_slope <= kQuadricSlopeVariance * plane_slope;
+  };
   // Planes with tau halved each round pick p's own face; quadrics then follow its curvature;
   // the last fit weighs every point within tau alike, so that the residuals measure the noise.
   double tau = std::max({0.5, kTukey * robust_noise(false), noise_floor / reach});
   constexpr int kPlaneRounds = 4, kQuadricRounds = 3;
   for (int round = 0; round < kPlaneRounds + kQuadricRounds; ++round) {
     const bool plane = round < kPlaneRounds;
+    if (round == kPlaneRounds && quadric_terms == 6 && !quadric_slope_holds()) quadric_terms = 3;
     if (weigh(tau, false) < 5u || !solve(plane ? 3 : quadric_terms)) break;
     tau = std::max({plane ? 0.5 * tau : 0.0, kTukey * robust_noise(true), noise_floor / reach,
                     1e-9});
