@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
+#include "local_surfels.h"
 #include "procedural_shapes.h"
 #include "surfel_cloud.h"
 
@@ -68,6 +70,38 @@ TEST(SurfelCloud, DuplicatesDoNotHideTheSpacing) {
     slab.normals.push_back(slab.normals[i]);
   }
   EXPECT_NEAR(slab.mean_spacing(), 0.5, 1e-9);
+}
+
+// A patch at UTM-like coordinates and the same patch moved by whole metres to near the origin
+// (the move itself inexact in the centre: 0.5 (min + max) rounds): the local frames'
+// coordinates agree bit for bit.
+TEST(SurfelCloud, MovingByWholeUnitsKeepsLocalCoordinatesExactly) {
+  SurfelCloud utm = make_slab(37.3, 0.61);
+  const Eigen::Vector3d offset(512600.0, 5403579.0, 350.0);
+  const Eigen::Vector3d fraction(0.0123456789, 0.3179, 0.0701);
+  for (Eigen::Vector3d& p : utm.positions) p += offset + fraction;
+  // One point a unit in the last place beyond the maximum where min + max is exact, so that
+  // the centre rounds in every coordinate.
+  const Bounds before = utm.bounds();
+  Eigen::Vector3d beyond = before.max;
+  for (int k = 0; k < 3; ++k)
+    if ((before.min[k] + before.max[k]) - before.max[k] == before.min[k])
+      beyond[k] = std::nextafter(before.max[k], 2.0 * before.max[k]);
+  utm.positions.push_back(beyond);
+  utm.normals.push_back(utm.normals.back());
+  for (int k = 0; k < 3; ++k) {
+    const double sum = utm.bounds().min[k] + utm.bounds().max[k];
+    ASSERT_NE(sum - utm.bounds().max[k], utm.bounds().min[k]) << "coordinate " << k;
+  }
+  SurfelCloud moved = utm;
+  for (Eigen::Vector3d& p : moved.positions) p -= offset;
+  const LocalSurfels a = LocalSurfels::from(utm, 1000.0, false);
+  const LocalSurfels b = LocalSurfels::from(moved, 1000.0, false);
+  ASSERT_EQ(a.positions.size(), b.positions.size());
+  for (std::size_t i = 0; i < a.positions.size(); ++i)
+    ASSERT_EQ(a.positions[i], b.positions[i]) << "point " << i;
+  // The origin stays within a 4096th of the extent of the centre.
+  EXPECT_LE((a.frame.origin - utm.bounds().center()).cwiseAbs().maxCoeff(), 37.3 / 4096.0);
 }
 
 }  // namespace

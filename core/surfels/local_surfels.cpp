@@ -10,7 +10,7 @@ namespace sss {
 LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
                                 bool with_surface_fit) {
   LocalSurfels local;
-  local.frame.origin = cloud.empty() ? Eigen::Vector3d::Zero() : cloud.bounds().center();
+  local.frame.origin = cloud.empty() ? Eigen::Vector3d::Zero() : cloud.bounds().frame_origin();
   local.frame.mm_per_unit = mm_per_unit;
   local.positions.reserve(cloud.size());
   for (const auto& p : cloud.positions) {

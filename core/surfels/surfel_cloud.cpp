@@ -19,6 +19,17 @@ void Bounds::extend(const Eigen::Vector3d& p) {
   max = max.cwiseMax(p);
 }
 
+Eigen::Vector3d Bounds::frame_origin() const {
+  const Eigen::Vector3d c = center();
+  const double largest = extent().maxCoeff();
+  if (empty || !(largest > 0.0) || !std::isfinite(largest)) return c;
+  const int step_exponent = std::ilogb(largest) - 12;
+  Eigen::Vector3d origin;
+  for (int k = 0; k < 3; ++k)
+    origin[k] = std::ldexp(std::round(std::ldexp(c[k], -step_exponent)), step_exponent);
+  return origin;
+}
+
 std::string CloudReport::summary() const {
   std::ostringstream s;
   s << "kept " << kept << " of " << input << " points";

@@ -17,6 +17,11 @@ struct Bounds {
   void extend(const Eigen::Vector3d& p);
   Eigen::Vector3d center() const { return 0.5 * (min + max); }
   Eigen::Vector3d extent() const { return max - min; }
+  // The origin of a cloud's local frame (LocalFrame): the centre rounded to a power-of-two
+  // step between 2^-13 and 2^-12 of the largest extent. Moving a cloud by a multiple of that
+  // step (any whole number of units, for clouds under 8192 units across) moves the origin by
+  // the same amount exactly, so its local coordinates stay the same bit for bit.
+  Eigen::Vector3d frame_origin() const;
 };
 
 // What validation removed or changed; counts refer to the input points.

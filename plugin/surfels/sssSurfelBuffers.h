@@ -1,7 +1,7 @@
 // An actor's surfels as GL vertex buffers, uploaded once by its vtkSurfelMapper and shared by
 // the camera view and the views from the lights: positions in scene units relative to the
-// bounds centre (PreparedSurfels::centre, which is also LocalSurfels' frame origin), unit
-// normals and RGBA colours, one per prepared surfel, ghosts included. The views from the
+// frame origin (PreparedSurfels::centre, Bounds::frame_origin, also LocalSurfels' origin),
+// unit normals and RGBA colours, one per prepared surfel, ghosts included. The views from the
 // lights scale the positions to millimetres in their matrices.
 #ifndef sssSurfelBuffers_h
 #define sssSurfelBuffers_h

@@ -152,8 +152,7 @@ PreparedSurfels prepare_surfels(vtkPolyData* input, const RadiusChoice& choice,
   {
     cloud.radii.assign(cloud.size(), prepared.view_radius);  // the light maps' discs too
   }
-  const Bounds b = cloud.bounds();
-  const Eigen::Vector3d c = b.center();
+  const Eigen::Vector3d c = cloud.bounds().frame_origin();
   prepared.centre = { { c.x(), c.y(), c.z() } };
   prepared.rgba.resize(4 * cloud.size());
   const bool perPoint = colours && colours->GetNumberOfComponents() == 4 &&

@@ -26,7 +26,7 @@ struct PreparedSurfels
 {
   SurfelCloud cloud;                          // scene units, validated
   CloudReport report;
-  std::array<double, 3> centre{ { 0, 0, 0 } };  // bounds centre of the kept points
+  std::array<double, 3> centre{ { 0, 0, 0 } };  // the kept points' Bounds::frame_origin
   std::vector<std::uint8_t> rgba;             // 4 per kept point
   double view_radius = 0.0;                   // the view's uniform radius, or the per-point median
   bool per_point_radii = false;               // cloud.radii differ (else all are view_radius)
