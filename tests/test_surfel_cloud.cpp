@@ -82,17 +82,17 @@ TEST(SurfelCloud, MovingByWholeUnitsKeepsLocalCoordinatesExactly) {
   for (Eigen::Vector3d& p : utm.positions) p += offset + fraction;
   // One point a unit in the last place beyond the maximum where min + max is exact, so that
   // the centre rounds in every coordinate.
+  const auto sum_is_exact = [](const Bounds& b, int k) {
+    return (b.min[k] + b.max[k]) - b.max[k] == b.min[k];
+  };
   const Bounds before = utm.bounds();
   Eigen::Vector3d beyond = before.max;
   for (int k = 0; k < 3; ++k)
-    if ((before.min[k] + before.max[k]) - before.max[k] == before.min[k])
-      beyond[k] = std::nextafter(before.max[k], 2.0 * before.max[k]);
+    if (sum_is_exact(before, k)) beyond[k] = std::nextafter(before.max[k], 2.0 * before.max[k]);
   utm.positions.push_back(beyond);
   utm.normals.push_back(utm.normals.back());
-  for (int k = 0; k < 3; ++k) {
-    const double sum = utm.bounds().min[k] + utm.bounds().max[k];
-    ASSERT_NE(sum - utm.bounds().max[k], utm.bounds().min[k]) << "coordinate " << k;
-  }
+  const Bounds after = utm.bounds();
+  for (int k = 0; k < 3; ++k) ASSERT_FALSE(sum_is_exact(after, k)) << "coordinate " << k;
   SurfelCloud moved = utm;
   for (Eigen::Vector3d& p : moved.positions) p -= offset;
   const LocalSurfels a = LocalSurfels::from(utm, 1000.0, false);
@@ -101,7 +101,7 @@ TEST(SurfelCloud, MovingByWholeUnitsKeepsLocalCoordinatesExactly) {
   for (std::size_t i = 0; i < a.positions.size(); ++i)
     ASSERT_EQ(a.positions[i], b.positions[i]) << "point " << i;
   // The origin stays within a 4096th of the extent of the centre.
-  EXPECT_LE((a.frame.origin - utm.bounds().center()).cwiseAbs().maxCoeff(), 37.3 / 4096.0);
+  EXPECT_LE((a.frame.origin - after.center()).cwiseAbs().maxCoeff(), 37.3 / 4096.0);
 }
 
 }  // namespace
