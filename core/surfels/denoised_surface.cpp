@@ -295,6 +295,32 @@ Eigen::Vector3d crease_plane(const std::vector<Eigen::Vector3d>& positions,
   return best > kCreaseMargin * own ? normals[chosen] : normals[i];
 }
 
+// A first normal (k0 nearest, where noise of one spacing makes the neighbourhood about as thick as
+// it is wide) that under this share of its neighbours' first normals lie within kCreaseAngle of
+// is not trusted as the frame of the second fit.
+constexpr double kSharedShare = 0.25;
+
+// The direction most of the first normals of `near` (less i) share, the principal axis of
+// Sum n_j n_j^T (the majority face beside a crease, not an average of two faces), when under
+// kSharedShare of them lie within kCreaseAngle of i's own; else zero. A first fit can be wrong by
+// 90 degrees, and a fit in that frame does not undo it, as it chooses its neighbours along the
+// wrong plane.
+Eigen::Vector3d unshared_first_normal_alternative(const std::vector<Eigen::Vector3d>& first_normals,
+                                                  std::size_t i,
+                                                  const std::vector<std::size_t>& near) {
+  std::size_t sharing = 0, counted = 0;
+  Eigen::Matrix3d structure = Eigen::Matrix3d::Zero();
+  for (std::size_t j : near) {
+    if (j == i || first_normals[j].isZero()) continue;
+    ++counted;
+    sharing += same_face(first_normals[i], first_normals[j]);
+    structure += first_normals[j] * first_normals[j].transpose();
+  }
+  if (counted == 0 || static_cast<double>(sharing) >= kSharedShare * static_cast<double>(counted))
+    return Eigen::Vector3d::Zero();
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(structure).eigenvectors().col(2);
+}
+
 // body(i) for every point, in chunks so that progress is reported from this thread; `offset`
 // and `total` place this pass in the whole.
 template <typename Body>
@@ -365,9 +391,15 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
     out.noise[i] = static_cast<float>(noise);
     out.neighbours[i] = k;
     if (first_normal[i].isZero()) return;
+    const Eigen::Vector3d alternative = unshared_first_normal_alternative(first_normal, i, near);
     index.nearest(positions[i], 2 * k + 1, near);
-    const PatchFit fit = fit_patch(positions, i, near, static_cast<std::size_t>(k) + 1,
-                                   first_normal[i], kTukey * noise, kTukey * noise);
+    PatchFit fit = fit_patch(positions, i, near, static_cast<std::size_t>(k) + 1, first_normal[i],
+                             kTukey * noise, kTukey * noise);
+    if (!alternative.isZero()) {  // the frame whose fit leaves the smaller residuals
+      const PatchFit other = fit_patch(positions, i, near, static_cast<std::size_t>(k) + 1,
+                                       alternative, kTukey * noise, kTukey * noise);
+      if (!other.normal.isZero() && (fit.normal.isZero() || other.noise < fit.noise)) fit = other;
+    }
     out.positions[i] = fit.position;
     out.normals[i] = fit.normal;
     may_be_beside_crease[i] = std::any_of(near.begin(), near.end(), [&](std::size_t j) {

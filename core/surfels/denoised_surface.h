@@ -22,6 +22,11 @@
 //   k = 2.5 sigma sqrt(pi rho) / normal_tolerance
 // nearest neighbours, clamped to [noise_neighbours, max_neighbours]: a flat wall of a Kinect at
 // 2 m (3.4 mm pitch, 3.4 mm noise) takes about 200 at the default tolerance, a clean scan 24.
+// The second fit starts in the frame of the point's first normal; where under a quarter of its
+// neighbours' first normals share that one (within 30 degrees: with noise of one spacing, a
+// first fit's 24 points are about as thick as they are wide, and one in a few thousand comes out
+// about 90 degrees wrong, which a fit in that frame does not undo), it is also fitted in the
+// frame most of them share, and the fit with the smaller residuals is kept.
 // Measured (tests/test_denoised_surface.cpp): the noise within 10 %, heights left at
 // 0.2-0.4 sigma, mean tilt 1.2-1.8 degrees (the quadric's slope varies more than a plane's).
 // A fit whose neighbours reach another face leans towards it. So, where some of a point's
