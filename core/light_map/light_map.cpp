@@ -146,10 +146,13 @@ bool light_reaches(const LocalSurfels& surfels, const LightView& view, const Dis
                    double cos_theta, double thickness) {
   int i = 0, j = 0;
   if (!view.texel_of(y, i, j)) return true;
-  if (hits.surfel[static_cast<std::size_t>(j) * view.width() + i] < 0) return true;
+  const std::int32_t seen_surfel = hits.surfel[static_cast<std::size_t>(j) * view.width() + i];
+  if (seen_surfel < 0) return true;
   const SurfacePoint seen = seen_point(surfels, view, hits, i, j);
   const double along = distance_to_seen_surface(y, towards_light, seen.position, seen.normal);
-  return std::fabs(along) <= visibility_tolerance(thickness, cos_theta);
+  return std::fabs(along) <=
+         visibility_tolerance(
+             thickness + surfels.noise_height(static_cast<std::size_t>(seen_surfel)), cos_theta);
 }
 
 }  // namespace sss

@@ -107,7 +107,9 @@ SurfacePoint seen_point(const LocalSurfels& surfels, const LightView& view, cons
 
 // Whether the light of `view` reaches the point y of a surfel's cell, whose cosine to the light
 // is cos_theta and whose thickness (local_surface.h) is `thickness`: the local surface of the
-// disc seen at y's texel passes within visibility_tolerance of y along the light, or the
+// disc seen at y's texel passes within visibility_tolerance of y along the light, for the
+// thickness plus the seen surfel's noise height (the seen surface too may stand that far off
+// where it was measured: a disc the noise left off its own neighbours is not an occluder), or the
 // texel sees no disc at all (y lies on its own disc at a silhouette that the texel's centre
 // missed: nothing stands in front of it).
 bool light_reaches(const LocalSurfels& surfels, const LightView& view, const DiscHits& hits,

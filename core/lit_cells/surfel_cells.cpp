@@ -34,7 +34,7 @@ SurfelCells surfel_cells(const LocalSurfels& surfels, const SurfelIndex& index,
       const Eigen::Vector3d& p = surfels.positions[i];
       Eigen::Vector3d t1, t2;
       tangent_frame(surfels.normals[i], t1, t2);
-      const double thickness = surface_thickness(surfels.roughness[i], surfels.curvature[i], r);
+      const double thickness = surfels.thickness(i);
       Polygon& cell = cells[i];
       disc_polygon(Eigen::Vector2d::Zero(), surfels.disc_radius(i), cell);
       // Neighbours within 2r first; a cell that still reaches past r (a sparse spot of a random

@@ -41,8 +41,7 @@ SurfelIrradiance surfel_irradiance(const LocalSurfels& surfels, const std::vecto
       const double side = surfels.normals[j].dot(source.towards(surfels.positions[j])) < 0.0 ? -1.0 : 1.0;
       const Eigen::Vector3d n = side * surfels.normals[j];
       const double kappa = side * std::clamp(surfels.curvature[j], -limit, limit);
-      const double thickness =
-          surface_thickness(surfels.roughness[j], surfels.curvature[j], surfels.cell_radius);
+      const double thickness = surfels.thickness(j);
       const double cell_radius = std::sqrt(area[j] / kPi);
       Eigen::Vector3d t1, t2;
       tangent_frame(n, t1, t2);

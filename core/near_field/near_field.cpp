@@ -76,7 +76,7 @@ NearFieldWeights near_field_weights(const LocalSurfels& surfels, const SurfelCel
       const Eigen::Vector3d& p = surfels.positions[o];
       const Eigen::Vector3d& normal = surfels.normals[o];
       const double kappa = std::clamp(surfels.curvature[o], -kappa_limit, kappa_limit);
-      const double thickness = surface_thickness(surfels.roughness[o], surfels.curvature[o], r);
+      const double thickness = surfels.thickness(o);
       index.within(p, reach, near);
       other.clear();
       Eigen::Vector3d t1, t2;

@@ -16,7 +16,7 @@
 namespace sss {
 
 // Raise when the file layout or what render_reference computes changes: old files then miss.
-constexpr std::uint32_t kReferenceCacheVersion = 12;
+constexpr std::uint32_t kReferenceCacheVersion = 13;
 
 // What identifies one reference result.
 struct ReferenceKey {

@@ -48,17 +48,23 @@ inline double distance_to_seen_surface(const Eigen::Vector3d& y, const Eigen::Ve
   return (seen_point - y).dot(seen_normal) / std::max(std::fabs(seen_normal.dot(towards)), 0.05);
 }
 
+// How far scanner noise may leave a surfel off the surface it measured (mm, along the normal):
+// three times its roughness.
+inline double noise_height(double roughness) { return 3.0 * roughness; }
+
 // How far off a surfel's local surface (mm, along the normal) the discs the light sees there
-// may stand and still be that surface: three times its roughness (scanner noise), the height
-// kappa r^2 by which flat discs of radius r stack above a curved surface, and a twentieth of a
-// disc radius. An occluder must stand farther off to shadow the surface.
+// may stand and still be that surface: its noise height, the height kappa r^2 by which flat
+// discs of radius r stack above a curved surface, and a twentieth of a disc radius. An occluder
+// must stand farther off to shadow the surface.
 inline double surface_thickness(double roughness, double kappa, double disc_radius) {
-  return 3.0 * roughness + std::fabs(kappa) * disc_radius * disc_radius + 0.05 * disc_radius;
+  return noise_height(roughness) + std::fabs(kappa) * disc_radius * disc_radius +
+         0.05 * disc_radius;
 }
 
 // A node belongs to the surface the light sees when that surface is within this distance of
-// it along the light: `thickness` is along the normal, cos_theta the node's cosine to the
-// light (a height along the normal is height / cos_theta along the light).
+// it along the light: `thickness` is along the normal (the node's surfel's thickness and the
+// seen disc's noise height together), cos_theta the node's cosine to the light (a height along
+// the normal is height / cos_theta along the light).
 inline double visibility_tolerance(double thickness, double cos_theta) {
   return thickness / std::max(cos_theta, 0.1);
 }

@@ -1,5 +1,6 @@
 #include "local_surfels.h"
 
+#include "local_surface.h"
 #include "surface_fit.h"
 
 #include <algorithm>
@@ -28,6 +29,15 @@ LocalSurfels LocalSurfels::from(const SurfelCloud& cloud, double mm_per_unit,
     local.roughness = std::move(fit.roughness);
   }
   return local;
+}
+
+double LocalSurfels::thickness(std::size_t i) const {
+  const bool fitted = roughness.size() == positions.size();
+  return surface_thickness(fitted ? roughness[i] : 0.0, fitted ? curvature[i] : 0.0, cell_radius);
+}
+
+double LocalSurfels::noise_height(std::size_t i) const {
+  return roughness.size() == positions.size() ? sss::noise_height(roughness[i]) : 0.0;
 }
 
 double LocalSurfels::max_disc_radius() const {

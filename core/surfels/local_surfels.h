@@ -31,6 +31,12 @@ struct LocalSurfels {
     return disc_radii.empty() ? cell_radius : disc_radii[i];
   }
   double max_disc_radius() const;
+  // How far off its local surface surfel i's discs may stand and still be it (local_surface.h
+  // surface_thickness, with roughness and curvature 0 without the surface fit), mm.
+  double thickness(std::size_t i) const;
+  // How far its noise may leave surfel i off the surface it measured (local_surface.h
+  // noise_height; 0 without the surface fit), mm.
+  double noise_height(std::size_t i) const;
 };
 
 }  // namespace sss

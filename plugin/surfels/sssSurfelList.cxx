@@ -2,7 +2,6 @@
 
 #include "sssGpuHelpers.h"
 
-#include "local_surface.h"
 #include "local_surfels.h"
 #include "hilbert_order.h"
 #include "surfel_cells.h"
@@ -89,12 +88,12 @@ bool SurfelList::upload(vtkOpenGLRenderWindow* window, const LocalSurfels& local
       shape[4 * t + c] = static_cast<float>(local.normals[i][c]);
       albedo[4 * t + c] = static_cast<float>(local.albedo.empty() ? 1.0 : local.albedo[i][c]);
     }
-    point[4 * t + 3] = static_cast<float>(
-      surface_thickness(local.roughness[i], local.curvature[i], local.cell_radius));
+    point[4 * t + 3] = static_cast<float>(local.thickness(i));
     shape[4 * t + 3] = static_cast<float>(local.curvature[i]);
     cell[4 * t] = static_cast<float>(std::sqrt(cells.area[i] / M_PI));
     cell[4 * t + 1] = static_cast<float>(cells.area[i]);
     cell[4 * t + 2] = static_cast<float>(local.disc_radius(i));
+    cell[4 * t + 3] = static_cast<float>(local.noise_height(i));
     at[2 * i] = static_cast<float>(t % width_);
     at[2 * i + 1] = static_cast<float>(t / width_);
   }

@@ -9,7 +9,8 @@ uniform float kappaLimitCell;  // 1/mm: the curvature clamp of a surfel's parabo
 // Whether the light reaches point y of a surface with cosine cosI to the light and surface
 // thickness `thickness` (mm): the local surface of the disc the map sees at y's texel
 // (core/light_map/light_map.cpp seen_point: the texel centre's ray meets the disc's plane at offset
-// d, lifted kappa |d|^2 / 2 below it) passes within thickness / cos of y along the light, or the
+// d, lifted kappa |d|^2 / 2 below it) passes within (thickness + the seen surfel's noise height)
+// / cos of y along the light, or the
 // texel sees no disc (nothing stands in front); not where another piece of a distributed cloud
 // stands in front.
 bool lightReaches(int light, vec3 y, float cosI, float thickness)
@@ -40,11 +41,12 @@ bool lightReaches(int light, vec3 y, float cosI, float thickness)
   cosSeen = cosSeen < 0.0 ? min(cosSeen, -1e-4) : max(cosSeen, 1e-4);
   vec3 d = origin + (dot(p - origin, n) / cosSeen) * ray - p;
   // The texel's centre lies on the disc; only rounding can put d past its radius.
-  d *= min(1.0, texelFetch(surfelCell, s, 0).z / max(length(d), 1e-30));
+  vec4 seenCell = texelFetch(surfelCell, s, 0);
+  d *= min(1.0, seenCell.z / max(length(d), 1e-30));
   float kappa = clamp(shape.w, -kappaLimitCell, kappaLimitCell);
   vec3 seenPoint = p + d - 0.5 * kappa * dot(d, d) * n;
   vec3 seenNormal = normalize(n + kappa * d);
   vec3 l = towardsLight(light, y);
   float along = dot(seenPoint - y, seenNormal) / max(abs(dot(seenNormal, l)), 0.05);
-  return abs(along) <= thickness / max(cosI, 0.1);
+  return abs(along) <= (thickness + seenCell.w) / max(cosI, 0.1);
 }

@@ -5,5 +5,6 @@
 
 uniform sampler2D surfelPoint;   // xyz: local mm, w: surface thickness (mm), 0: empty texel
 uniform sampler2D surfelShape;   // xyz: unit normal, w: mean curvature (1/mm)
-uniform sampler2D surfelCell;    // x: cell radius (mm), y: cell area (mm^2), z: disc radius (mm)
+uniform sampler2D surfelCell;    // x: cell radius (mm), y: cell area (mm^2), z: disc radius (mm),
+                                 // w: noise height (mm, core/surfels/local_surface.h)
 uniform sampler2D surfelAlbedo;  // rgb
