@@ -28,9 +28,9 @@ std::string DenoiseReport::summary() const {
   char text[256];
   std::snprintf(text, sizeof text,
                 "noise %.3g (p90 %.3g) at spacing %.3g, fits of %d points (largest %d), "
-                "largest shift %.3g, %zu beside a crease",
+                "largest shift %.3g, %zu beside a crease, %zu fitted in their neighbours' frame",
                 median_noise, p90_noise, median_spacing, median_neighbours, largest_neighbours,
-                largest_shift, beside_crease);
+                largest_shift, beside_crease, in_neighbours_frame);
   return text;
 }
 
@@ -376,7 +376,7 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
   }, progress, 0, 3 * n);
 
   // Second fit: the noise as the median over the same neighbours, k from it.
-  std::vector<char> may_be_beside_crease(n, 0);
+  std::vector<char> may_be_beside_crease(n, 0), in_neighbours_frame(n, 0);
   for_each_point(static_cast<long>(n), [&](std::size_t i) {
     std::vector<std::size_t> near;
     index.nearest(positions[i], k0 + 1, near);
@@ -398,7 +398,10 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
     if (!alternative.isZero()) {  // the frame whose fit leaves the smaller residuals
       const PatchFit other = fit_patch(positions, i, near, static_cast<std::size_t>(k) + 1,
                                        alternative, kTukey * noise, kTukey * noise);
-      if (!other.normal.isZero() && (fit.normal.isZero() || other.noise < fit.noise)) fit = other;
+      if (!other.normal.isZero() && (fit.normal.isZero() || other.noise < fit.noise)) {
+        fit = other;
+        in_neighbours_frame[i] = 1;
+      }
     }
     out.positions[i] = fit.position;
     out.normals[i] = fit.normal;
@@ -450,7 +453,11 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
       if (beside_crease[i]) points.push_back(i);
   }
   if (progress) progress(3 * n, 3 * n);
-  if (report) report->beside_crease = points.size();
+  if (report) {
+    report->beside_crease = points.size();
+    report->in_neighbours_frame = static_cast<std::size_t>(
+        std::count(in_neighbours_frame.begin(), in_neighbours_frame.end(), 1));
+  }
 
   if (report) {
     report->points = n;

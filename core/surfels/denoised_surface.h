@@ -75,8 +75,9 @@ struct DenoiseReport {
   int median_neighbours = 0, largest_neighbours = 0;
   double largest_shift = 0.0;  // farthest a point moved
   std::size_t beside_crease = 0;  // points fitted again over their own face's neighbours
+  std::size_t in_neighbours_frame = 0;  // points whose fit in their neighbours' frame was kept
   // "noise 1.2 (p90 3.1) at spacing 3.4, fits of 177 points (largest 256), largest shift 17.8,
-  // 5120 beside a crease"
+  // 5120 beside a crease, 3 fitted in their neighbours' frame"
   std::string summary() const;
 };
 
