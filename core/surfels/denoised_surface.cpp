@@ -393,11 +393,13 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
     if (first_normal[i].isZero()) return;
     const Eigen::Vector3d alternative = unshared_first_normal_alternative(first_normal, i, near);
     index.nearest(positions[i], 2 * k + 1, near);
-    PatchFit fit = fit_patch(positions, i, near, static_cast<std::size_t>(k) + 1, first_normal[i],
-                             kTukey * noise, kTukey * noise);
+    const auto fit_in = [&](const Eigen::Vector3d& frame) {
+      return fit_patch(positions, i, near, static_cast<std::size_t>(k) + 1, frame,
+                       kTukey * noise, kTukey * noise);
+    };
+    PatchFit fit = fit_in(first_normal[i]);
     if (!alternative.isZero()) {  // the frame whose fit leaves the smaller residuals
-      const PatchFit other = fit_patch(positions, i, near, static_cast<std::size_t>(k) + 1,
-                                       alternative, kTukey * noise, kTukey * noise);
+      const PatchFit other = fit_in(alternative);
       if (!other.normal.isZero() && (fit.normal.isZero() || other.noise < fit.noise)) {
         fit = other;
         in_neighbours_frame[i] = 1;
@@ -454,13 +456,10 @@ DenoisedSurface denoise_surface(const std::vector<Eigen::Vector3d>& positions,
   }
   if (progress) progress(3 * n, 3 * n);
   if (report) {
+    report->points = n;
     report->beside_crease = points.size();
     report->in_neighbours_frame = static_cast<std::size_t>(
         std::count(in_neighbours_frame.begin(), in_neighbours_frame.end(), 1));
-  }
-
-  if (report) {
-    report->points = n;
     std::vector<double> noise(out.noise.begin(), out.noise.end());
     std::sort(noise.begin(), noise.end());
     report->median_noise = noise[n / 2];
