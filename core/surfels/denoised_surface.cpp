@@ -47,6 +47,11 @@ constexpr double kTukey = 4.685;
 // 1000 leaves the Kinect scenes' fits all but unchanged.
 constexpr double kQuadricSlopeVariance = 1000.0;
 
+// The quadric's slope stands where its squared difference from the plane's exceeds this many
+// times that difference's variance summed over both axes (where the axes vary alike, a
+// chi-squared of 2 degrees beyond 12: by chance at e^-6, 0.25 % of a plane's points).
+constexpr double kSlopeTest = 6.0;
+
 struct PatchFit {
   Eigen::Vector3d position, normal;
   double noise = 0.0;  // RMS of the last fit's residuals over its k - 6 degrees of freedom
@@ -179,6 +184,33 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
     return std::isfinite(quadric_slope) && quadric_slope > 0.0 &&
            quadric_slope <= kQuadricSlopeVariance * plane_slope;
   };
+  // The slope at p: the quadric's, or the plane's over the same neighbours where the two differ
+  // by less than the noise of their difference (a Hausman test: the plane's slope varies less,
+  // and the quadric's extrapolates where the neighbours lie on one side of p, at a scan's edge).
+  // Both are unbiased on a plane, so Var(quadric - plane) = Var(quadric) - Var(plane), each
+  // sigma^2 times the slope's entries of (A^T W A)^-1.
+  const auto take_plane_slope_within_noise = [&](double variance) {
+    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+    for (std::size_t k = 0; k < m; ++k)
+      if (weight[k] > 0.0) normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
+    const Eigen::Matrix<double, 6, 6> quadric_inverse = normal_matrix.inverse();
+    const Eigen::Matrix3d plane_inverse = normal_matrix.topLeftCorner<3, 3>().inverse();
+    const double difference_variance =
+      variance * (quadric_inverse(1, 1) + quadric_inverse(2, 2) - plane_inverse(1, 1) -
+                  plane_inverse(2, 2));
+    const Eigen::Matrix<double, 6, 1> quadric = coefficients;
+    const std::vector<double> quadric_residual = residual;
+    if (!(difference_variance > 0.0) || !solve(3)) {
+      coefficients = quadric;
+      residual = quadric_residual;
+      return;
+    }
+    const Eigen::Vector2d plane_slope = coefficients.segment<2>(1);
+    coefficients = quadric;
+    residual = quadric_residual;
+    if ((quadric.segment<2>(1) - plane_slope).squaredNorm() < kSlopeTest * difference_variance)
+      coefficients.segment<2>(1) = plane_slope;
+  };
   // Planes with tau halved each round pick p's own face; quadrics then follow its curvature;
   // the last fit weighs every point within tau alike, so that the residuals measure the noise.
   double tau = std::max({0.5, kTukey * robust_noise(false), noise_floor / reach});
@@ -194,7 +226,9 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
   if (kept >= static_cast<std::size_t>(quadric_terms) + 2 && solve(quadric_terms)) {
     double sum2 = 0.0;
     for (std::size_t k = 0; k < m; ++k) sum2 += weight[k] * residual[k] * residual[k];
-    fit.noise = reach * std::sqrt(sum2 / static_cast<double>(kept - quadric_terms));
+    const double variance = sum2 / static_cast<double>(kept - quadric_terms);
+    fit.noise = reach * std::sqrt(variance);
+    if (quadric_terms == 6) take_plane_slope_within_noise(variance);
   }
   const Eigen::Vector3d normal = n - coefficients[1] * t1 - coefficients[2] * t2;
   // A point over twice the floor (9.4 sigma; twice tau on the first fit, which does not know

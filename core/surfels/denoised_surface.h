@@ -12,7 +12,11 @@
 // fit that weighs every neighbour within tau alike. The neighbours are the nearest along the
 // tangent plane, heights within tau counted as on it (3D nearest neighbours of a noisy point
 // favour those at its own height). The point moves to p + a n and its normal becomes
-// normalize(n - b t1 - c t2).
+// normalize(n - b t1 - c t2), with the slope (b, c) of the plane fitted over the same
+// neighbours instead where the two slopes differ by less than the noise of their difference
+// (a Hausman test): at a scan's open edge, whose neighbours lie on one side, the quadric's slope
+// extrapolates (within one spacing of a noisy plane's edge, mean tilt 4.9 degrees with it, 1.8
+// with this, at noise of 0.3 spacings).
 //
 // The noise sigma is the residuals' RMS (over k - 6 degrees of freedom) of a first fit over
 // `noise_neighbours`, then the median of that over the same neighbours (one rough patch does
