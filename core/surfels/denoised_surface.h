@@ -38,11 +38,12 @@
 // whose normals lie within 30 degrees of the plane through it that its neighbours support best
 // (its own, or a neighbour's clearly better supported), in two rounds.
 // Measured (tests/test_denoised_surface.cpp, a box's 90 degree edge, convex and concave): at
-// noise up to 0.3 spacings every normal farther than one spacing from the edge within 6 degrees
-// of its face's (up to 44 before); at noise of one spacing, where the fits reach 8 spacings, some points
-// up to 4 spacings from the edge take the other face's normal and those beyond lean by up to 4
-// degrees on average. Not met yet: where points lie far apart a crease's points move off it (5 cm
-// at the synthetic room's far corners, 6 cm spacing).
+// noise up to 0.3 spacings the normals farther than one spacing from the edge within 3 degrees
+// of their face's on average and 6 at the 99th percentile (the largest 7; up to 44 before); at
+// noise of one spacing, where the fits reach 8 spacings, some points up to 4 spacings from the
+// edge take the other face's normal and those beyond lean by up to 4 degrees on average. Not
+// met yet: where points lie far apart a crease's points move off it (5 cm at the synthetic
+// room's far corners, 6 cm spacing).
 #pragma once
 
 #include <Eigen/Core>
