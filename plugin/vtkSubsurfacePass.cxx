@@ -37,6 +37,11 @@
 
 vtkStandardNewMacro(vtkSubsurfacePass);
 
+int vtkSubsurfacePass::GetMaxLights()
+{
+  return sss::kMaxLights;
+}
+
 struct vtkSubsurfacePass::Internals
 {
   explicit Internals(vtkSubsurfacePass* self)

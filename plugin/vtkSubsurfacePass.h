@@ -5,7 +5,8 @@
  * Renders its delegate (the usual camera/sequence passes) into a float image and composites
  * it into the output. Actors that carry a vtkTranslucentMaterial and draw with a
  * vtkSurfelMapper get, in three steps:
- *  1. a light map from every switched-on light of the renderer (up to 4): orthographic along
+ *  1. a light map from every switched-on light of the renderer (up to GetMaxLights(), 5: a
+ *     ParaView view's headlight and light kit; beyond, the first five): orthographic along
  *     a directional light, perspective from a positional one (a point light, or a spot below
  *     a cone angle of 90 degrees, its irradiance falling off with VTK's attenuation values and
  *     exponent; one among the points is taken as directional, from its focal point, with a
@@ -56,6 +57,9 @@ public:
   static vtkSubsurfacePass* New();
   vtkTypeMacro(vtkSubsurfacePass, vtkImageProcessingPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The most lights that light translucent actors (5); the renderer's first ones are taken. */
+  static int GetMaxLights();
 
   enum KernelStrategies
   {

@@ -397,6 +397,36 @@ TEST(GpuAlbedo, ColoursScaleTheLightEnteringEachPoint) {
   EXPECT_LT(e.p99, 0.03);
 }
 
+// A ParaView view lights with five (a headlight and the light kit's four). Eq. 17 is linear in
+// E, and each light has its own map and pyramid, so B under five lights is the sum of B under
+// each alone, to float rounding (the far field sums each light's groups in its own order):
+// within 1e-4 of the largest B. With four lights at most, the fifth light's share was missing.
+TEST(GpuLights, FiveLightsAddUp) {
+  SurfelCloud sphere = make_sphere(10.0, 0.5);
+  sphere.validate();
+  const std::vector<Light> five = {{Eigen::Vector3d(0, 0, 1), 0.75},
+                                   {Eigen::Vector3d(1, 0.4, 0.2), 0.25},
+                                   {Eigen::Vector3d(-1, 0.3, -0.4), 0.3},
+                                   {Eigen::Vector3d(0.2, -1, -0.5), 0.3},
+                                   {Eigen::Vector3d(-0.3, 0.2, -1), 0.5}};
+  ASSERT_EQ(vtkSubsurfacePass::GetMaxLights(), 5);
+  GpuScene scene(sphere, Material::preset("skimmilk"), five);
+  const std::vector<Rgb> together = scene.render_B();
+  std::vector<Rgb> sum(together.size(), Rgb{0.0, 0.0, 0.0});
+  for (const Light& light : five) {
+    scene.set_lights({light});
+    const std::vector<Rgb> alone = scene.render_B();
+    ASSERT_EQ(alone.size(), sum.size());
+    for (std::size_t i = 0; i < sum.size(); ++i)
+      for (int c = 0; c < 3; ++c) sum[i][c] += alone[i][c];
+  }
+  ASSERT_TRUE(all_finite(together));
+  const double difference = largest_difference(together, sum);
+  std::printf("[ five lights ] B under five lights against the sum of each alone: largest "
+              "difference %.2e of the largest B\n", difference);
+  EXPECT_LT(difference, 1e-4);
+}
+
 TEST(GpuBadInput, NoLightGivesBlackNotNaN) {
   SurfelCloud sphere = make_sphere(10.0, 0.5);
   sphere.validate();

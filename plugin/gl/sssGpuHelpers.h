@@ -21,7 +21,7 @@ class vtkWindow;
 namespace sss
 {
 
-constexpr int kMaxLights = 4;   // lights that light translucent actors
+constexpr int kMaxLights = 5;   // lights that light translucent actors: ParaView's five by default
 constexpr int kMaxLevels = 15;  // pyramid levels per light (maps or surfel lists of 2^14)
 constexpr int kListWidth = 256;  // of list textures: squarish keeps the rasteriser's tiles busy
 

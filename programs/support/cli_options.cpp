@@ -118,10 +118,10 @@ usage: sss_render [INPUT.pcd|.ply|.ply.gz|.obj|.xyz|.txt|.csv|.asc] [options]
   --eta V                   relative index of refraction (default )" << sss::kDefaultEta << R"()
   --mm-per-unit MM          millimetres per scene unit (default 1; 1000 for scans in metres)
   --scale MM                the same as --mm-per-unit (its older name)
-  --light-dir X,Y,Z         from the object towards a directional light; repeatable, up to 4
+  --light-dir X,Y,Z         from the object towards a directional light; repeatable, up to 5
                             (default one light at -0.3,0.5,0.8)
   --point-light X,Y,Z       a point light at X,Y,Z (scene units), as a positional vtkLight
-                            with no spot cone; repeatable, up to 4 lights in all
+                            with no spot cone; repeatable, up to 5 lights in all
   --light-attenuation A,B,C point lights' irradiance over A + B d + C d^2, d in scene units
                             (default 1,0,0: none, as VTK's; 0,0,1: the inverse square)
   --light-irradiance V      irradiance of each light (default 1)
@@ -355,8 +355,10 @@ Options parse(int argc, char** argv) {
     }
   }
   if (o.light_dirs.empty() && o.point_lights.empty()) o.light_dirs.emplace_back(-0.3, 0.5, 0.8);
-  if (o.light_dirs.size() + o.point_lights.size() > 4)
-    throw std::invalid_argument("--light-dir, --point-light: at most 4 lights are supported");
+  const int most = vtkSubsurfacePass::GetMaxLights();
+  if (o.light_dirs.size() + o.point_lights.size() > static_cast<std::size_t>(most))
+    throw std::invalid_argument("--light-dir, --point-light: at most " + std::to_string(most) +
+                                " lights are supported");
   return o;
 }
 
