@@ -171,45 +171,52 @@ PatchFit fit_once(const std::vector<Eigen::Vector3d>& positions, std::size_t i,
     }
     return kept;
   };
-  // Whether the quadric's slope at p, weighted as the last plane was, varies at most
-  // kQuadricSlopeVariance times as much as the plane's ((A^T W A)^-1 of each).
-  const auto quadric_slope_holds = [&]() {
+  // Under the current weights: the variances of the plane's and the quadric's slope at p over
+  // sigma^2 (the slope entries of each (A^T W A)^-1, summed over both axes), and the plane's
+  // slope (NaN where its normal equations are singular).
+  struct SlopeSpread {
+    double plane = 0.0, quadric = 0.0;
+    Eigen::Vector2d plane_slope;
+  };
+  const auto slope_spread = [&]() {
     Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
-    for (std::size_t k = 0; k < m; ++k)
-      if (weight[k] > 0.0) normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
-    const Eigen::Matrix3d plane_inverse = normal_matrix.topLeftCorner<3, 3>().inverse();
+    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+    for (std::size_t k = 0; k < m; ++k) {
+      if (weight[k] <= 0.0) continue;
+      normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
+      rhs.noalias() += weight[k] * height[k] * basis[k];
+    }
+    const Eigen::Matrix3d plane_matrix = normal_matrix.topLeftCorner<3, 3>();
+    const Eigen::Matrix3d plane_inverse = plane_matrix.inverse();
     const Eigen::Matrix<double, 6, 6> quadric_inverse = normal_matrix.inverse();
-    const double plane_slope = plane_inverse(1, 1) + plane_inverse(2, 2);
-    const double quadric_slope = quadric_inverse(1, 1) + quadric_inverse(2, 2);
-    return std::isfinite(quadric_slope) && quadric_slope > 0.0 &&
-           quadric_slope <= kQuadricSlopeVariance * plane_slope;
+    const Eigen::LDLT<Eigen::Matrix3d> plane_solver(plane_matrix);
+    SlopeSpread spread;
+    spread.plane = plane_inverse(1, 1) + plane_inverse(2, 2);
+    spread.quadric = quadric_inverse(1, 1) + quadric_inverse(2, 2);
+    spread.plane_slope = plane_solver.info() == Eigen::Success
+                           ? Eigen::Vector2d(plane_solver.solve(rhs.head<3>()).segment<2>(1))
+                           : Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+    return spread;
+  };
+  // Whether the quadric's slope at p, weighted as the last plane was, varies at most
+  // kQuadricSlopeVariance times as much as the plane's.
+  const auto quadric_slope_holds = [&]() {
+    const SlopeSpread spread = slope_spread();
+    return std::isfinite(spread.quadric) && spread.quadric > 0.0 &&
+           spread.quadric <= kQuadricSlopeVariance * spread.plane;
   };
   // The slope at p: the quadric's, or the plane's over the same neighbours where the two differ
   // by less than the noise of their difference (a Hausman test: the plane's slope varies less,
   // and the quadric's extrapolates where the neighbours lie on one side of p, at a scan's edge).
   // Both are unbiased on a plane, so Var(quadric - plane) = Var(quadric) - Var(plane), each
-  // sigma^2 times the slope's entries of (A^T W A)^-1.
+  // sigma^2 (`variance`) times its slope spread.
   const auto take_plane_slope_within_noise = [&](double variance) {
-    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
-    for (std::size_t k = 0; k < m; ++k)
-      if (weight[k] > 0.0) normal_matrix.noalias() += weight[k] * basis[k] * basis[k].transpose();
-    const Eigen::Matrix<double, 6, 6> quadric_inverse = normal_matrix.inverse();
-    const Eigen::Matrix3d plane_inverse = normal_matrix.topLeftCorner<3, 3>().inverse();
-    const double difference_variance =
-      variance * (quadric_inverse(1, 1) + quadric_inverse(2, 2) - plane_inverse(1, 1) -
-                  plane_inverse(2, 2));
-    const Eigen::Matrix<double, 6, 1> quadric = coefficients;
-    const std::vector<double> quadric_residual = residual;
-    if (!(difference_variance > 0.0) || !solve(3)) {
-      coefficients = quadric;
-      residual = quadric_residual;
-      return;
-    }
-    const Eigen::Vector2d plane_slope = coefficients.segment<2>(1);
-    coefficients = quadric;
-    residual = quadric_residual;
-    if ((quadric.segment<2>(1) - plane_slope).squaredNorm() < kSlopeTest * difference_variance)
-      coefficients.segment<2>(1) = plane_slope;
+    const SlopeSpread spread = slope_spread();
+    const double difference_variance = variance * (spread.quadric - spread.plane);
+    if (difference_variance > 0.0 && spread.plane_slope.allFinite() &&
+        (coefficients.segment<2>(1) - spread.plane_slope).squaredNorm() <
+          kSlopeTest * difference_variance)
+      coefficients.segment<2>(1) = spread.plane_slope;
   };
   // Planes with tau halved each round pick p's own face; quadrics then follow its curvature;
   // the last fit weighs every point within tau alike, so that the residuals measure the noise.
