@@ -26,19 +26,19 @@ constexpr int kWidestBand = 4;
 
 namespace
 {
-int walk_root_level(const LitCells& cells, int light)
+int walk_root_level(const LitCells& cells, int pyramid)
 {
-  return std::min(cells.levels(light) - 1, kWalkRoot);
+  return std::min(cells.levels(pyramid) - 1, kWalkRoot);
 }
 }
 
-int far_field_parts(const LitCells& cells, int lights)
+int far_field_parts(const LitCells& cells)
 {
   int parts = 0;
-  for (int l = 0; l < lights; ++l)
+  for (int p = 0; p < cells.pyramids(); ++p)
   {
-    const int level = walk_root_level(cells, l);
-    parts += cells.level_width(l, level) * cells.level_height(l, level);
+    const int level = walk_root_level(cells, p);
+    parts += cells.level_width(p, level) * cells.level_height(p, level);
   }
   return parts;
 }
@@ -69,7 +69,7 @@ void FarFieldProgress::fit_band(double took, int rows)
 }
 
 void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
-  const LitCells& cells, int lights, int rows, const FarFieldSettings& settings,
+  const LitCells& cells, int rows, const FarFieldSettings& settings,
   FarFieldProgress& progress, double seconds)
 {
   Stopwatch clock;
@@ -105,17 +105,17 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
   {
     glFinish();  // the steps before, so that the first band's time is its own
   }
-  // One quad per light and node of its pyramid's level kWalkRoot (or its top), so that no
+  // One quad per pyramid and node of its level kWalkRoot (or its top), so that no
   // fragment walks more than (4^(kWalkRoot + 1) - 1) / 3 nodes: llvmpipe stops a shader
   // invocation's loops after 65,535 iterations in all.
-  progress.total = far_field_parts(cells, lights);
+  progress.total = far_field_parts(cells);
   int part = 0;  // this quad's place among all of them
   int drawn_here = 0;
-  for (int l = 0; l < lights; ++l)
+  for (int p = 0; p < cells.pyramids(); ++p)
   {
-    const int level = walk_root_level(cells, l);
-    const int roots = cells.level_width(l, level) * cells.level_height(l, level);
-    program->SetUniformi("walkLight", l);
+    const int level = walk_root_level(cells, p);
+    const int roots = cells.level_width(p, level) * cells.level_height(p, level);
+    program->SetUniformi("walkPyramid", p);
     program->SetUniformi("walkRootLevel", level);
     for (int k = 0; k < roots; ++k, ++part)
     {
@@ -123,7 +123,7 @@ void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderPr
       {
         continue;  // drawn by an earlier call
       }
-      const int root[2] = { k % cells.level_width(l, level), k / cells.level_width(l, level) };
+      const int root[2] = { k % cells.level_width(p, level), k / cells.level_width(p, level) };
       program->SetUniform2i("walkRoot", root);
       // The rows left of this quad (all of them unless an earlier call drew some), in bands.
       while (progress.rows_drawn < rows)

@@ -1,6 +1,7 @@
-// Step 2's far field on the GPU (far_field.glsl): at every surfel, a walk of each light's
-// source pyramid (sssLitCells) over the cells beyond the near field's reach, a group of cells
-// taken as one source once it is small and far enough (the opening angle), added to B.
+// Step 2's far field on the GPU (far_field.glsl): at every surfel, a walk of each source
+// pyramid (sssLitCells: the lit cells of all lights, one or two pyramids) over the cells beyond
+// the near field's reach, a group of cells taken as one source once it is small and far enough
+// (the opening angle), added to B.
 #ifndef sssFarField_h
 #define sssFarField_h
 
@@ -28,7 +29,7 @@ struct FarFieldSettings
   double size_bound_reach[3] = {};  // mm per channel: its support at kGroupSizeBoundFraction
 };
 
-// How far a far field drawn in parts has come: its quads (one per light and walk root) drawn
+// How far a far field drawn in parts has come: its quads (one per pyramid and walk root) drawn
 // so far, of all, and of the next one the rows of the surfel list drawn so far; and how many
 // rows a part draws (bands of a quad's receivers, each summing the same roots in the same
 // order, so that B is the same as from whole quads).
@@ -55,18 +56,18 @@ struct FarFieldProgress
   void fit_band(double took, int rows);
 };
 
-// The quads add_far_field draws for `lights` lights.
-int far_field_parts(const LitCells& cells, int lights);
+// The quads add_far_field draws.
+int far_field_parts(const LitCells& cells);
 
-// Adds the far field of `lights` lights into the bound target with `program` (a quad over the
-// surfel list, `rows` high, that includes far_field.glsl), blending by addition: the quads
+// Adds the far field of the lit cells' pyramids into the bound target with `program` (a quad
+// over the surfel list, `rows` high, that includes far_field.glsl), blending by addition: the quads
 // from progress.drawn on (of the first, the rows from progress.rows_drawn on), all of them with
 // infinite `seconds`; else in bands of rows, the first and then others only while fewer than
 // that many seconds have passed (waiting for the GPU after each band to know), the rest left to
 // a later call, the bands fitted to progress.band_seconds as they are timed (fit_band; a root's
 // cells, and so the receivers that cost most, lie in a few rows).
 void add_far_field(vtkOpenGLState* state, vtkOpenGLQuadHelper& quad, vtkShaderProgram* program,
-  const LitCells& cells, int lights, int rows, const FarFieldSettings& settings,
+  const LitCells& cells, int rows, const FarFieldSettings& settings,
   FarFieldProgress& progress, double seconds);
 }
 

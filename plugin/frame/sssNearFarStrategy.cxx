@@ -188,7 +188,7 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
 
   // B at every surfel: the near field's table, then the far field's walk.
   static const std::string gather_fs = shader_with_pieces(sss_near_field_fs,
-    std::string(sss_surfel_list) + "uniform int lightCount;\n" + sss_dipole + sss_near_field +
+    std::string(sss_surfel_list) + sss_dipole + sss_near_field +
       sss_far_field);
   vtkShaderProgram* gather = ready_quad(g.gather_quad, window, gather_fs.c_str());
   if (!gather)
@@ -210,7 +210,6 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
   g.cells.activate(gather);
   g.list.set(gather);
   g.set_dipole(gather, dipole);
-  gather->SetUniformi("lightCount", lights);
   state->vtkglViewport(0, 0, g.list.width(), g.list.height());
   if (!context.resume)
   {
@@ -234,12 +233,12 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
     if (context.resume || call.seconds() < context.seconds)
     {
       g.far_progress.band_seconds = context.seconds;
-      add_far_field(state, *g.gather_quad, gather, g.cells, lights, g.list.height(), far,
+      add_far_field(state, *g.gather_quad, gather, g.cells, g.list.height(), far,
         g.far_progress, context.seconds - call.seconds());
     }
     else
     {
-      g.far_progress.total = far_field_parts(g.cells, lights);
+      g.far_progress.total = far_field_parts(g.cells);
     }
   }
   g.cells.deactivate();

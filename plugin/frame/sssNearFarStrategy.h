@@ -3,8 +3,9 @@
 // from a table the light does not change (sssNearFieldTable) and the far field by a walk of the lit
 // cells' pyramid (sssFarField). The same model as the CPU reference
 // (core/reference/reference_renderer.h): the bake (cells, the near-field table, the surfel list)
-// runs on the CPU when the geometry, the material or a setting changes; a light move runs three GPU
-// passes per light and the near and far field's passes over all surfels.
+// runs on the CPU when the geometry, the material or a setting changes; a light move lights the
+// cells for all lights in one pass, reduces the lights' shared source pyramids (one, or two where
+// cells are lit on both sides) and runs the near and far field's passes over all surfels.
 #ifndef sssNearFarStrategy_h
 #define sssNearFarStrategy_h
 

@@ -22,7 +22,7 @@ namespace sss
 {
 
 constexpr int kMaxLights = 5;   // lights that light translucent actors: ParaView's five by default
-constexpr int kMaxLevels = 15;  // pyramid levels per light (maps or surfel lists of 2^14)
+constexpr int kMaxLevels = 15;  // levels of a light map or a source pyramid (up to 2^14 a side)
 constexpr int kListWidth = 256;  // of list textures: squarish keeps the rasteriser's tiles busy
 
 // An RGBA32F (or, with 2 components, RG32F) texture with nearest filtering, clamped at the

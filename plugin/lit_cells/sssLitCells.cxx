@@ -7,6 +7,7 @@
 #include "sss_light_maps.h"
 #include "sss_light_visibility.h"
 #include "sss_cell_samples.h"
+#include "sss_lit_cell_sources_fs.h"
 #include "sss_pyramid_reduce_fs.h"
 #include "sss_refined_cells_fs.h"
 #include "sss_refined_cells_scatter_fs.h"
@@ -128,8 +129,8 @@ LitCells::~LitCells() = default;
 
 void LitCells::release(vtkWindow* window)
 {
-  release_held(window, E_, fresnel_, irradiance_quad_, refined_quad_, reduce_quad_, refined_cell_,
-    refined_E_);
+  release_held(window, E_[0], E_[1], fresnel_, irradiance_quad_, refined_quad_, sources_quad_,
+    reduce_quad_, refined_cell_, refined_E_[0], refined_E_[1]);
   refined_texels_->ReleaseGraphicsResources();
   scatter_vao_.release();
   for (auto& t : source_)
@@ -137,7 +138,7 @@ void LitCells::release(vtkWindow* window)
     release_held(window, t);
   }
   fbo_->ReleaseGraphicsResources(window);
-  atlas_lights_ = 0;
+  atlas_pyramids_ = 0;
 }
 
 void LitCells::bake(vtkOpenGLRenderWindow* window, const Material& material)
@@ -155,19 +156,18 @@ void LitCells::bake(vtkOpenGLRenderWindow* window, const Material& material)
   fresnel_->SetMinificationFilter(vtkTextureObject::Linear);
   fresnel_->SetMagnificationFilter(vtkTextureObject::Linear);
   fresnel_->Create2DFromRaw(kFresnelTableSize, 1, 4, VTK_FLOAT, table.data());
-  atlas_lights_ = 0;
+  atlas_pyramids_ = 0;
 }
 
-// Each light's pyramid: level 0 the list's size at (0, l * height), the coarser levels to its
-// right.
-void LitCells::allocate(vtkOpenGLRenderWindow* window, int width, int height, int lights)
+// Each pyramid: level 0 the list's size at (0, p * height), the coarser levels to its right.
+void LitCells::allocate(vtkOpenGLRenderWindow* window, int width, int height, int pyramids)
 {
-  levels_.assign(lights, {});
-  for (int l = 0; l < lights; ++l)
+  levels_.assign(pyramids, {});
+  for (int p = 0; p < pyramids; ++p)
   {
-    std::vector<Rect>& r = levels_[l];
-    r.push_back({ 0, l * height, width, height });
-    int w = width, h = height, y = l * height;
+    std::vector<Rect>& r = levels_[p];
+    r.push_back({ 0, p * height, width, height });
+    int w = width, h = height, y = p * height;
     while (w > 1 || h > 1)
     {
       w = (w + 1) / 2;
@@ -176,35 +176,41 @@ void LitCells::allocate(vtkOpenGLRenderWindow* window, int width, int height, in
       y += h;
     }
   }
-  if (atlas_lights_ == lights && atlas_width_ == width && atlas_height_ == height && E_)
+  if (atlas_pyramids_ == pyramids && atlas_width_ == width && atlas_height_ == height)
   {
     return;
   }
-  const int atlas_w = width + std::max(1, width / 2);
-  const int atlas_h = height * lights;
-  E_ = float_texture_2d(window, width, atlas_h);
+  for (auto& t : E_)
+  {
+    t = float_texture_2d(window, width, height);
+  }
   for (auto& t : source_)
   {
-    t = float_texture_2d(window, atlas_w, atlas_h);
+    t = float_texture_2d(window, width + std::max(1, width / 2), height * pyramids);
   }
-  atlas_lights_ = lights;
+  atlas_pyramids_ = pyramids;
   atlas_width_ = width;
   atlas_height_ = height;
 }
 
-int LitCells::levels(int light) const
+int LitCells::pyramids() const
 {
-  return static_cast<int>(levels_[light].size());
+  return static_cast<int>(levels_.size());
 }
 
-int LitCells::level_width(int light, int level) const
+int LitCells::levels(int pyramid) const
 {
-  return levels_[light][level].width;
+  return static_cast<int>(levels_[pyramid].size());
 }
 
-int LitCells::level_height(int light, int level) const
+int LitCells::level_width(int pyramid, int level) const
 {
-  return levels_[light][level].height;
+  return levels_[pyramid][level].width;
+}
+
+int LitCells::level_height(int pyramid, int level) const
+{
+  return levels_[pyramid][level].height;
 }
 
 bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
@@ -212,31 +218,32 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   std::string& error)
 {
   const int lights = static_cast<int>(maps.maps.size());
-  allocate(window, list.width(), list.height(), std::max(lights, 1));
+  allocate(window, list.width(), list.height(), lights > 1 ? kMaxPyramids : 1);
   static const std::string pieces =
     std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table +
     sss_cell_samples;
   static const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs, pieces);
   static const std::string refined_fs = shader_with_pieces(sss_refined_cells_fs, pieces);
-  static const std::string scatter_fs =
-    shader_with_pieces(sss_refined_cells_scatter_fs, sss_surfel_list);
+  static const std::string sources_fs =
+    shader_with_pieces(sss_lit_cell_sources_fs, sss_surfel_list);
   vtkShaderProgram* scatter = window->GetShaderCache()->ReadyShaderProgram(
-    sss_refined_cells_scatter_vs, scatter_fs.c_str(), "");
+    sss_refined_cells_scatter_vs, sss_refined_cells_scatter_fs, "");
   vtkShaderProgram* irradiance = ready_quad(irradiance_quad_, window, irradiance_fs.c_str());
-  if (!scatter || !irradiance || !ready_quad(refined_quad_, window, refined_fs.c_str()) ||
+  vtkShaderProgram* sources = ready_quad(sources_quad_, window, sources_fs.c_str());
+  if (!scatter || !irradiance || !sources ||
+    !ready_quad(refined_quad_, window, refined_fs.c_str()) ||
     !ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs))
   {
-    error = "the irradiance, refined cells' or pyramid shader did not compile";
+    error = "the irradiance, refined cells', cell sources' or pyramid shader did not compile";
     return false;
   }
-  lights_ = lights;
   vtkOpenGLState* state = window->GetState();
   PointPassState pass_state(state);
   state->PushFramebufferBindings();
   fbo_->SetContext(window);
   fbo_->Bind();
 
-  // Each light: the cells' irradiance and the finest level of its source pyramid.
+  // The pyramids' atlas cleared: the targets lit_cell_sources_fs.glsl leaves are 0 at level 0.
   state->vtkglClearColor(0, 0, 0, 0);
   state->vtkglViewport(0, 0, source_[0]->GetWidth(), source_[0]->GetHeight());
   for (int k = 0; k < kSources; ++k)
@@ -246,13 +253,11 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   fbo_->ActivateDrawBuffers(kSources);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
   fbo_->RemoveColorAttachments(kSources);
-  fbo_->AddColorAttachment(0, E_);
-  for (int k = 0; k < kCellSources; ++k)
-  {
-    fbo_->AddColorAttachment(k + 1, source_[k]);
-  }
-  fbo_->ActivateDrawBuffers(kCellSources + 1);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+
+  // Each cell's E on its front and back, summed over the lights.
+  fbo_->AddColorAttachment(0, E_[0]);
+  fbo_->AddColorAttachment(1, E_[1]);
+  fbo_->ActivateDrawBuffers(2);
   window->GetShaderCache()->ReadyShaderProgram(irradiance);
   maps.surfel->Activate();
   list.activate();
@@ -261,47 +266,62 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   const int refined_samples = kRefinedSamplesPerSample * cell_samples;
   irradiance->SetUniformi("cellSamples", cell_samples);
   irradiance->SetUniformi("cellRefinedSamples", refined_samples);
-  for (int l = 0; l < lights; ++l)
-  {
-    irradiance->SetUniformi("light", l);
-    const Rect& r = levels_[l][0];
-    state->vtkglViewport(r.x, r.y, r.width, r.height);
-    irradiance_quad_->Render();
-  }
-  fbo_->RemoveColorAttachments(kCellSources + 1);
-  refined = 0;
-  for (int l = 0; l < lights; ++l)
-  {
-    refined += refine(window, list, maps, disc_radius, refined_samples, scatter, l);
-  }
+  state->vtkglViewport(0, 0, list.width(), list.height());
+  irradiance_quad_->Render();
+  fbo_->RemoveColorAttachments(2);
+  refined = refine(window, list, maps, disc_radius, cell_samples, refined_samples, scatter);
   fresnel_->Deactivate();
-  list.deactivate();
   maps.surfel->Deactivate();
+
+  // The pyramids' finest level from both sides (lit_cell_sources_fs.glsl).
+  for (int k = 0; k < kCellSources; ++k)
+  {
+    fbo_->AddColorAttachment(k, source_[k]);
+  }
+  fbo_->ActivateDrawBuffers(kCellSources);
+  window->GetShaderCache()->ReadyShaderProgram(sources);
+  list.set(sources);
+  E_[0]->Activate();
+  E_[1]->Activate();
+  sources->SetUniformi("frontIrradiance", E_[0]->GetTextureUnit());
+  sources->SetUniformi("backIrradiance", E_[1]->GetTextureUnit());
+  for (int p = 0; p < pyramids(); ++p)
+  {
+    sources->SetUniformi("minorSide", p);
+    const Rect& r = levels_[p][0];
+    state->vtkglViewport(r.x, r.y, r.width, r.height);
+    sources_quad_->Render();
+  }
+  E_[1]->Deactivate();
+  E_[0]->Deactivate();
+  fbo_->RemoveColorAttachments(kCellSources);
+  list.deactivate();
   state->PopFramebufferBindings();
   return true;
 }
 
 std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& list,
-  const LightMapAtlas& maps, double disc_radius, int refined_samples, vtkShaderProgram* scatter,
-  int l)
+  const LightMapAtlas& maps, double disc_radius, int cell_samples, int refined_samples,
+  vtkShaderProgram* scatter)
 {
-  // The marked cells, from E's alpha.
-  const Rect& r = levels_[l][0];
-  std::vector<float> E(4 * std::size_t(r.width) * std::size_t(r.height));
-  fbo_->AddColorAttachment(0, E_);
+  // The marked cells, from the front's alpha (the bits of the lights whose points disagree).
+  const int list_width = list.width(), list_height = list.height();
+  std::vector<float> E(4 * std::size_t(list_width) * std::size_t(list_height));
+  fbo_->AddColorAttachment(0, E_[0]);
   fbo_->ActivateDrawBuffers(1);
   fbo_->ActivateReadBuffer(0);
-  glReadPixels(r.x, r.y, r.width, r.height, GL_RGBA, GL_FLOAT, E.data());
+  glReadPixels(0, 0, list_width, list_height, GL_RGBA, GL_FLOAT, E.data());
   fbo_->RemoveColorAttachments(1);
-  std::vector<float> texels;
-  for (int y = 0; y < r.height; ++y)
+  std::vector<float> texels, cells;  // the cells' texels; and with their lights' bits
+  for (int y = 0; y < list_height; ++y)
   {
-    for (int x = 0; x < r.width; ++x)
+    for (int x = 0; x < list_width; ++x)
     {
-      if (E[4 * (std::size_t(y) * r.width + x) + 3] > 0.5f)
+      const float lights = E[4 * (std::size_t(y) * list_width + x) + 3];
+      if (lights > 0.5f)
       {
-        texels.push_back(float(x));
-        texels.push_back(float(y));
+        texels.insert(texels.end(), { float(x), float(y) });
+        cells.insert(cells.end(), { float(x), float(y), lights, 0.0f });
       }
     }
   }
@@ -312,18 +332,20 @@ std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& li
   }
 
   // Lit again in a block of their own, row by row.
-  const int width = r.width;
+  const int width = list_width;
   const int height = static_cast<int>((count + width - 1) / width);
-  texels.resize(2 * std::size_t(width) * height, 0.0f);
+  cells.resize(4 * std::size_t(width) * height, 0.0f);
   if (!refined_cell_)
   {
-    refined_cell_ = float_texture_2d(window, width, height, 2);
+    refined_cell_ = float_texture_2d(window, width, height);
   }
-  refined_cell_->Create2DFromRaw(width, height, 2, VTK_FLOAT, texels.data());  // same handle
-  if (!refined_E_ || refined_E_->GetWidth() != unsigned(width) ||
-    refined_E_->GetHeight() < unsigned(height))
+  refined_cell_->Create2DFromRaw(width, height, 4, VTK_FLOAT, cells.data());  // same handle
+  for (auto& t : refined_E_)
   {
-    refined_E_ = float_texture_2d(window, width, height);
+    if (!t || t->GetWidth() != unsigned(width) || t->GetHeight() < unsigned(height))
+    {
+      t = float_texture_2d(window, width, height);
+    }
   }
   vtkOpenGLState* state = window->GetState();
   vtkShaderProgram* program = refined_quad_->Program;
@@ -332,41 +354,42 @@ std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& li
   refined_cell_->Activate();
   program->SetUniformi("refinedCell", refined_cell_->GetTextureUnit());
   program->SetUniformi("refinedCount", static_cast<int>(count));
+  program->SetUniformi("cellSamples", cell_samples);
   program->SetUniformi("cellRefinedSamples", refined_samples);
-  program->SetUniformi("light", l);
-  fbo_->AddColorAttachment(0, refined_E_);
-  fbo_->ActivateDrawBuffers(1);
+  fbo_->AddColorAttachment(0, refined_E_[0]);
+  fbo_->AddColorAttachment(1, refined_E_[1]);
+  fbo_->ActivateDrawBuffers(2);
   state->vtkglViewport(0, 0, width, height);
   refined_quad_->Render();
-  fbo_->RemoveColorAttachments(1);
+  fbo_->RemoveColorAttachments(2);
   refined_cell_->Deactivate();
 
-  // Each back in its texel: E, and the power and weight of the pyramid's finest level.
+  // Each back in its texel.
   window->GetShaderCache()->ReadyShaderProgram(scatter);
-  texels.resize(2 * count);
   refined_texels_->Upload(texels, vtkOpenGLBufferObject::ArrayBuffer);
   scatter_vao_.bind_vec2(scatter, refined_texels_, "cellTexel");
-  list.set(scatter);
-  refined_E_->Activate();
-  scatter->SetUniformi("refinedE", refined_E_->GetTextureUnit());
+  refined_E_[0]->Activate();
+  refined_E_[1]->Activate();
+  scatter->SetUniformi("refinedFront", refined_E_[0]->GetTextureUnit());
+  scatter->SetUniformi("refinedBack", refined_E_[1]->GetTextureUnit());
   scatter->SetUniformi("refinedWidth", width);
-  const float size[2] = { float(r.width), float(r.height) };
+  const float size[2] = { float(list_width), float(list_height) };
   scatter->SetUniform2f("listSize", size);
-  fbo_->AddColorAttachment(0, E_);
-  fbo_->AddColorAttachment(1, source_[0]);
-  fbo_->AddColorAttachment(2, source_[1]);
-  fbo_->ActivateDrawBuffers(3);
-  state->vtkglViewport(r.x, r.y, r.width, r.height);
+  fbo_->AddColorAttachment(0, E_[0]);
+  fbo_->AddColorAttachment(1, E_[1]);
+  fbo_->ActivateDrawBuffers(2);
+  state->vtkglViewport(0, 0, list_width, list_height);
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
   scatter_vao_.vao->Release();
-  fbo_->RemoveColorAttachments(3);
-  refined_E_->Deactivate();
+  fbo_->RemoveColorAttachments(2);
+  refined_E_[1]->Deactivate();
+  refined_E_[0]->Deactivate();
   return count;
 }
 
 void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
 {
-  const int lights = lights_;
+  const int pyramids = this->pyramids();
   vtkShaderProgram* reduce = reduce_quad_->Program;
   vtkOpenGLState* state = window->GetState();
   PointPassState pass_state(state);
@@ -389,12 +412,12 @@ void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
   {
     reduce->SetUniformi(names[k], source_[k]->GetTextureUnit());
   }
-  for (int l = 0; l < lights; ++l)
+  for (int p = 0; p < pyramids; ++p)
   {
-    for (std::size_t L = 1; L < levels_[l].size(); ++L)
+    for (std::size_t L = 1; L < levels_[p].size(); ++L)
     {
-      const Rect& src = levels_[l][L - 1];
-      const Rect& dst = levels_[l][L];
+      const Rect& src = levels_[p][L - 1];
+      const Rect& dst = levels_[p][L];
       const int origin[2] = { src.x, src.y }, size[2] = { src.width, src.height },
                 target[2] = { dst.width, dst.height };
       reduce->SetUniform2i("sourceOrigin", origin);
@@ -410,12 +433,12 @@ void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
   {
     t->Deactivate();
   }
-  // The pyramids' tops count the lit cells.
+  // The pyramids' tops count the lit cells (a cell lit on both sides counts in both).
   lit = 0;
   fbo_->ActivateReadBuffer(1);
-  for (int l = 0; l < lights; ++l)
+  for (int p = 0; p < pyramids; ++p)
   {
-    const Rect& top = levels_[l].back();
+    const Rect& top = levels_[p].back();
     float value[4] = { 0, 0, 0, 0 };
     glReadPixels(top.x, top.y, 1, 1, GL_RGBA, GL_FLOAT, value);
     lit += static_cast<std::size_t>(value[3] + 0.5f);
@@ -426,8 +449,10 @@ void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
 
 void LitCells::activate(vtkShaderProgram* program) const
 {
-  E_->Activate();
-  program->SetUniformi("irradiance", E_->GetTextureUnit());
+  E_[0]->Activate();
+  E_[1]->Activate();
+  program->SetUniformi("frontIrradiance", E_[0]->GetTextureUnit());
+  program->SetUniformi("backIrradiance", E_[1]->GetTextureUnit());
   const char* names[kSources] = { "sourcePoint", "sourcePower", "sourceNormal",
     "sourceCovariance0", "sourceCovariance1", "sourceCovariance2", "sourceCovariance3",
     "sourceCovariance4" };
@@ -436,20 +461,20 @@ void LitCells::activate(vtkShaderProgram* program) const
     source_[k]->Activate();
     program->SetUniformi(names[k], source_[k]->GetTextureUnit());
   }
-  std::vector<float> rects(4 * kMaxLights * kMaxLevels, 0.0f);
-  for (std::size_t l = 0; l < levels_.size(); ++l)
+  std::vector<float> rects(4 * kMaxPyramids * kMaxLevels, 0.0f);
+  for (std::size_t p = 0; p < levels_.size(); ++p)
   {
-    for (std::size_t L = 0; L < levels_[l].size() && L < std::size_t(kMaxLevels); ++L)
+    for (std::size_t L = 0; L < levels_[p].size() && L < std::size_t(kMaxLevels); ++L)
     {
-      const Rect& r = levels_[l][L];
-      float* out = &rects[4 * (l * kMaxLevels + L)];
+      const Rect& r = levels_[p][L];
+      float* out = &rects[4 * (p * kMaxLevels + L)];
       out[0] = float(r.x);
       out[1] = float(r.y);
       out[2] = float(r.width);
       out[3] = float(r.height);
     }
   }
-  program->SetUniform4fv("sourceLevelRect", kMaxLights * kMaxLevels, rects.data());
+  program->SetUniform4fv("sourceLevelRect", kMaxPyramids * kMaxLevels, rects.data());
 }
 
 void LitCells::deactivate() const
@@ -458,7 +483,8 @@ void LitCells::deactivate() const
   {
     t->Deactivate();
   }
-  E_->Deactivate();
+  E_[1]->Deactivate();
+  E_[0]->Deactivate();
 }
 
 }

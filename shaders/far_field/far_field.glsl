@@ -1,13 +1,13 @@
-// The far field of eq. 17 at a receiver: a walk of each light's source pyramid (the lit cells,
-// surfel_irradiance_fs.glsl, reduced by pyramid_reduce_fs.glsl) over the cells whose surfel
-// lies farther than farFrom (the near-field table holds the nearer ones whole), taking a group
-// of cells as one source, each dipole pole by its own mean and covariance (dipole.glsl), once
-// its spread (twice the RMS distance of its points from their mean) is below openingAngle
-// times its distance from x, its radius spans at most maxGroupDiffusionLengths of every
-// channel whose kernel still carries a share of its integral there (the group's nearest point
-// within sizeBoundReach), and x lies beyond the clamp of every pole by the poles' spread
-// (secondOrderHolds); a cell wider than a quarter of its distance from x (where
-// the spacing is coarse for the near-field table's reach, as in the far rows of a Kinect scan)
+// The far field of eq. 17 at a receiver: a walk of a source pyramid (the lit cells of all lights,
+// lit_cell_sources_fs.glsl, reduced by pyramid_reduce_fs.glsl) over the cells whose surfel lies
+// farther than farFrom (the near-field table holds the nearer ones whole), taking a group of
+// cells as one source, each dipole pole by its own mean and covariance (dipole.glsl), once its
+// spread (twice the RMS distance of its points from their mean) is below openingAngle times its
+// distance from x, its radius spans at most maxGroupDiffusionLengths of every channel whose
+// kernel still carries a share of its integral there (the group's nearest point within
+// sizeBoundReach), and x lies beyond the clamp of every pole by the poles' spread
+// (secondOrderHolds); a cell wider than a quarter of its distance from x (where the spacing is
+// coarse for the near-field table's reach, as in the far rows of a Kinect scan)
 // by a ring rule over its disc (cellRd). x is a surfel, so no other surfel's cell reaches
 // nearer to x than to its own surfel (cells are Voronoi cells): a disc is taken only on its
 // surfel's side of the bisector with x, and a cell beyond twice supportRadius adds nothing. The
@@ -21,7 +21,7 @@ uniform sampler2D sourceCovariance1;  // points: xz, yz; S: xx, yy
 uniform sampler2D sourceCovariance2;  // S: zz, xy, xz, yz
 uniform sampler2D sourceCovariance3;  // normals: xx, yy, zz, xy
 uniform sampler2D sourceCovariance4;  // normals: xz, yz
-uniform vec4 sourceLevelRect[SSS_MAX_LIGHTS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
+uniform vec4 sourceLevelRect[2 * SSS_MAX_LEVELS];  // per pyramid: atlas origin xy, size zw
 uniform float openingAngle;
 uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral
@@ -87,18 +87,18 @@ ivec3 unpackNode(uint word)
 }
 
 // The part of the far field at x from the cells under one node `root` (xy: texel in its
-// level, z: level) of light `light`'s pyramid. Step 2 sums it over the nodes of a level low
-// enough that no walk visits more than 21,845 nodes: llvmpipe ends a shader invocation's
+// level, z: level) of pyramid `pyramid` (sssLitCells.h). Step 2 sums it over the nodes of a
+// level low enough that no walk visits more than 21,845 nodes: llvmpipe ends a shader invocation's
 // loops after 65,535 iterations in all, which a walk of a whole large pyramid can exceed. A
 // node costs one iteration of the walk and, when opened, four of the loop over its children:
 // at most 21,845 + 4 x 5,461 = 43,689; the wide cells' rings add at most 16 x (5 rings +
 // about 100 points), under 1,700. The loops over the three channels that a node would
 // add are spelled out instead (dipole.glsl).
-vec3 farFieldB(vec3 x, int light, ivec3 root)
+vec3 farFieldB(vec3 x, int pyramid, ivec3 root)
 {
   vec3 sum = vec3(0.0);
   uint stack[64];  // nodes packed by packNode
-  int base = light * SSS_MAX_LEVELS;
+  int base = pyramid * SSS_MAX_LEVELS;
   int depth = 0;
   stack[depth++] = packNode(root);
   // Cells wider than a quarter of their distance from x, summed by cellRd after the walk so

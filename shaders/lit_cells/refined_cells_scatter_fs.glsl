@@ -1,10 +1,8 @@
 //VTK::System::Dec
-// Step 2: a refined cell's E (refined_cells_fs.glsl) over its first estimate, with the power and
-// weight that follow from it (surfel_irradiance_fs.glsl's first three targets).
+// Step 2: a refined cell's E on each side (refined_cells_fs.glsl) over its first estimate.
 
-uniform sampler2D refinedE;
-
-//SSS::Gather::Dec
+uniform sampler2D refinedFront;
+uniform sampler2D refinedBack;
 
 flat in ivec2 cell;
 flat in ivec2 refined;
@@ -13,10 +11,6 @@ flat in ivec2 refined;
 
 void main()
 {
-  vec3 E = texelFetch(refinedE, refined, 0).rgb;
-  vec3 power = E * texelFetch(surfelCell, cell, 0).y;
-  float weight = power.r + power.g + power.b;
-  gl_FragData[0] = vec4(E, 0.0);
-  gl_FragData[1] = vec4(texelFetch(surfelPoint, cell, 0).xyz, weight);
-  gl_FragData[2] = vec4(power, weight > 0.0 ? 1.0 : 0.0);
+  gl_FragData[0] = vec4(texelFetch(refinedFront, refined, 0).rgb, 0.0);
+  gl_FragData[1] = vec4(texelFetch(refinedBack, refined, 0).rgb, 0.0);
 }

@@ -1,13 +1,14 @@
 //VTK::System::Dec
-// Step 2, per surfel and light (core/lit_cells/surfel_irradiance.h is the same on the CPU): the
-// irradiance of eq. 15 averaged over the surfel's cell, E = albedo E_light 1/S Sum_s
-// Ft(eta, theta_s) cos(theta_s) V(y_s) over S = cellSamples points (cell_samples.glsl), V from
-// the light's map; and the cell as a source of the far field: its point, power E dA, normal
-// (turned towards the light), radius and covariance, the finest level of that light's source
-// pyramid. Where the points disagree (an edge or the terminator crosses the cell), E's alpha
-// marks the cell for refined_cells_fs.glsl, which lights it again with cellRefinedSamples.
+// Step 2, per surfel (core/lit_cells/surfel_irradiance.h is the same on the CPU, per light): the
+// irradiance of eq. 15 averaged over the surfel's cell, E_l = albedo E_light 1/S Sum_s
+// Ft(eta, theta_s) cos(theta_s) V_l(y_s) over S = cellSamples points (cell_samples.glsl), V_l
+// from light l's map, summed over the lights that light the side the surfel's normal faces
+// (front) and over those that light the other (back): each light turns the normal towards its
+// side (cellNormal), and the dipoles of the two sides differ. Where a light's points disagree
+// (an edge or the terminator crosses the cell), the front's alpha holds the lights' bits for
+// refined_cells_fs.glsl, which lights the cell again with cellRefinedSamples for them.
+// lit_cell_sources_fs.glsl makes the source pyramids' finest level from both.
 
-uniform int light;               // which light
 uniform int cellSamples;
 uniform int cellRefinedSamples;
 
@@ -21,30 +22,30 @@ void main()
 {
   ivec2 at = ivec2(texCoord * vec2(textureSize(surfelPoint, 0)));
   vec4 point = texelFetch(surfelPoint, at, 0);
-  vec3 E = vec3(0.0);
-  vec3 n = vec3(0.0);
-  float cellRadius = 0.0;
-  float area = 0.0;
-  float refine = 0.0;
+  vec3 front = vec3(0.0), back = vec3(0.0);
+  int refineLights = 0;
   if (point.w > 0.0)
   {
-    vec2 cell = texelFetch(surfelCell, at, 0).xy;
-    cellRadius = cell.x;
-    area = cell.y;
-    n = cellNormal(at, towardsLight(light, point.xyz));
-    int lit;
-    vec3 mean = cellSampleMean(at, point, light, cellSamples, lit);
-    E = lightIrradiance[light] * texelFetch(surfelAlbedo, at, 0).rgb * mean;
-    refine = lit > 0 && lit < cellSamples && cellRefinedSamples > cellSamples ? 1.0 : 0.0;
+    vec3 albedo = texelFetch(surfelAlbedo, at, 0).rgb;
+    vec3 n = texelFetch(surfelShape, at, 0).xyz;
+    for (int l = 0; l < lightCount; ++l)
+    {
+      int lit;
+      vec3 E = lightIrradiance[l] * albedo * cellSampleMean(at, point, l, cellSamples, lit);
+      if (dot(n, towardsLight(l, point.xyz)) < 0.0)
+      {
+        back += E;
+      }
+      else
+      {
+        front += E;
+      }
+      if (lit > 0 && lit < cellSamples && cellRefinedSamples > cellSamples)
+      {
+        refineLights += 1 << l;
+      }
+    }
   }
-  vec3 power = E * area;
-  float weight = power.r + power.g + power.b;
-  // The cell as a disc of its area: variance r^2 / 4 along each tangent.
-  mat3 cov = 0.25 * cellRadius * cellRadius * (mat3(1.0) - outerProduct(n, n));
-  gl_FragData[0] = vec4(E, refine);
-  gl_FragData[1] = vec4(point.xyz, weight);
-  gl_FragData[2] = vec4(power, weight > 0.0 ? 1.0 : 0.0);
-  gl_FragData[3] = vec4(n, cellRadius);
-  gl_FragData[4] = vec4(cov[0][0], cov[1][1], cov[2][2], cov[0][1]);
-  gl_FragData[5] = vec4(cov[0][2], cov[1][2], 0.0, 0.0);
+  gl_FragData[0] = vec4(front, float(refineLights));
+  gl_FragData[1] = vec4(back, 0.0);
 }

@@ -1,14 +1,14 @@
 //VTK::System::Dec
 // Step 2, at every surfel: the near field from its row of the table (one quad over the surfel
-// list), then the far field when the kernel reaches past it, one quad per node of a light's
+// list), then the far field when the kernel reaches past it, one quad per node of a source
 // pyramid whose cells it sums (far_field.glsl), added by blending.
 
 in vec2 texCoord;  // over the surfel list
 
 uniform bool addNearField;
 uniform bool addFarField;
-uniform int walkLight;
-uniform ivec2 walkRoot;  // a node of walkLight's pyramid: its texel in level walkRootLevel
+uniform int walkPyramid;
+uniform ivec2 walkRoot;  // a node of walkPyramid: its texel in level walkRootLevel
 uniform int walkRootLevel;
 
 //SSS::Gather::Dec
@@ -28,7 +28,7 @@ void main()
     }
     if (addFarField)
     {
-      B += farFieldB(point.xyz, walkLight, ivec3(walkRoot, walkRootLevel));
+      B += farFieldB(point.xyz, walkPyramid, ivec3(walkRoot, walkRootLevel));
     }
   }
   gl_FragData[0] = vec4(B, addNearField ? 1.0 : 0.0);
