@@ -397,12 +397,14 @@ TEST(GpuAlbedo, ColoursScaleTheLightEnteringEachPoint) {
   EXPECT_LT(e.p99, 0.03);
 }
 
-// A ParaView view lights with five (a headlight and the light kit's four), here from both
-// sides of the sphere. The lights share the source pyramids (each cell's more lit side in one,
-// its other side in the other), so B under five lights is held to the reference under the same
-// five as one light is (GpuAlbedo's bars); with four lights at most, the fifth light's share
-// (a tenth of the light) was missing, past both bars. Eq. 17 is linear in E: the difference from
-// the sum of B under each light alone is printed, the far field's grouping apart.
+// A ParaView view lights with five (a headlight and the light kit's four). The lights share the
+// source pyramids (each cell's more lit side in one, its other side in the other), so B under
+// five lights is held to the reference under the same five as one light is (GpuAlbedo's bars):
+// on a sphere, each cell lit on its outer side by the lights that see it, and on an open slab
+// lit from above and below, each cell lit on both sides. With four lights at most, the fifth
+// light's share (a tenth of the light) was missing, past both bars. Eq. 17 is linear in E: the
+// difference from the sum of B under each light alone is printed, the far field's grouping
+// apart.
 TEST(GpuLights, FiveLightsMeetTheReference) {
   SurfelCloud sphere = make_sphere(10.0, 0.5);
   sphere.validate();
@@ -431,6 +433,19 @@ TEST(GpuLights, FiveLightsMeetTheReference) {
   }
   std::printf("[ five lights ] against the sum of each alone: largest difference %.2e of the "
               "largest B\n", largest_difference(together, sum));
+
+  SurfelCloud slab = make_slab(12.0, 0.5);
+  slab.validate();
+  const std::vector<Light> both_sides = {{Eigen::Vector3d(0.2, 0, 1), 0.75},
+                                         {Eigen::Vector3d(-0.3, 0.2, -1), 0.5},
+                                         {Eigen::Vector3d(1, 0.4, -0.3), 0.25}};
+  const std::vector<Rgb> slab_B = GpuScene(slab, milk, both_sides).render_B();
+  ASSERT_TRUE(all_finite(slab_B));
+  const ErrorStats s = compare_radiance(slab_B, render_reference(slab, milk, both_sides).B);
+  std::printf("[ five lights ] open slab lit on both sides, against the reference: mean %.3f %% "
+              "p99 %.3f %% max %.3f %%\n", 100 * s.mean, 100 * s.p99, 100 * s.max);
+  EXPECT_LT(s.mean, 0.005);
+  EXPECT_LT(s.p99, 0.03);
 }
 
 TEST(GpuBadInput, NoLightGivesBlackNotNaN) {
