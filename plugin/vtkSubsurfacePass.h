@@ -306,9 +306,10 @@ public:
   vtkGetMacro(LastHandOverSeconds, double);
   /** The last light move by step in one line: "map 0.11 s, cells 0.21 s, ...". */
   std::string GetLastLightMoveProfile() const;
+  /** NEAR_FAR: the lit cells in the source pyramids (a cell lit on both sides is in both). */
   vtkGetMacro(LastLitCells, vtkIdType);
-  /** NEAR_FAR: the cells whose first samples disagreed (a shadow edge or the terminator
-   * crosses them), lit again with eight times as many, over all lights. */
+  /** NEAR_FAR: the cells whose first samples disagreed for some light (a shadow edge or the
+   * terminator crosses them), lit again with eight times as many for those lights. */
   vtkGetMacro(LastRefinedCells, vtkIdType);
   vtkGetMacro(LastSurfels, vtkIdType);
   vtkGetMacro(LastMapWidth, int);
