@@ -57,6 +57,7 @@ std::string shader_with_pieces(std::string source, const std::string& gather)
   vtkShaderProgram::Substitute(source, "//SSS::Dipole::Dec", sss_dipole, true);
   vtkShaderProgram::Substitute(source, "SSS_MAX_LIGHTS", std::to_string(kMaxLights), true);
   vtkShaderProgram::Substitute(source, "SSS_MAX_LEVELS", std::to_string(kMaxLevels), true);
+  vtkShaderProgram::Substitute(source, "SSS_MAX_PYRAMIDS", std::to_string(kMaxPyramids), true);
   return source;
 }
 

@@ -23,6 +23,7 @@ namespace sss
 
 constexpr int kMaxLights = 5;   // lights that light translucent actors: ParaView's five by default
 constexpr int kMaxLevels = 15;  // levels of a light map or a source pyramid (up to 2^14 a side)
+constexpr int kMaxPyramids = 2;  // source pyramids the lights share: cells' more lit side, other
 constexpr int kListWidth = 256;  // of list textures: squarish keeps the rasteriser's tiles busy
 
 // An RGBA32F (or, with 2 components, RG32F) texture with nearest filtering, clamped at the

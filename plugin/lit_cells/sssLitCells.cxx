@@ -213,6 +213,14 @@ int LitCells::level_height(int pyramid, int level) const
   return levels_[pyramid][level].height;
 }
 
+void LitCells::activate_irradiance(vtkShaderProgram* program) const
+{
+  E_[0]->Activate();
+  E_[1]->Activate();
+  program->SetUniformi("frontIrradiance", E_[0]->GetTextureUnit());
+  program->SetUniformi("backIrradiance", E_[1]->GetTextureUnit());
+}
+
 bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   const LightMapAtlas& maps, double disc_radius, int cell_samples, std::size_t& refined,
   std::string& error)
@@ -281,10 +289,7 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   fbo_->ActivateDrawBuffers(kCellSources);
   window->GetShaderCache()->ReadyShaderProgram(sources);
   list.set(sources);
-  E_[0]->Activate();
-  E_[1]->Activate();
-  sources->SetUniformi("frontIrradiance", E_[0]->GetTextureUnit());
-  sources->SetUniformi("backIrradiance", E_[1]->GetTextureUnit());
+  activate_irradiance(sources);
   for (int p = 0; p < pyramids(); ++p)
   {
     sources->SetUniformi("minorSide", p);
@@ -449,10 +454,7 @@ void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
 
 void LitCells::activate(vtkShaderProgram* program) const
 {
-  E_[0]->Activate();
-  E_[1]->Activate();
-  program->SetUniformi("frontIrradiance", E_[0]->GetTextureUnit());
-  program->SetUniformi("backIrradiance", E_[1]->GetTextureUnit());
+  activate_irradiance(program);
   const char* names[kSources] = { "sourcePoint", "sourcePower", "sourceNormal",
     "sourceCovariance0", "sourceCovariance1", "sourceCovariance2", "sourceCovariance3",
     "sourceCovariance4" };

@@ -38,7 +38,6 @@ class LitCells
 {
 public:
   static constexpr int kSources = 8;  // pyramid textures (at most 8 draw buffers)
-  static constexpr int kMaxPyramids = 2;  // a cell's more lit side, and its other
 
   LitCells();
   ~LitCells();
@@ -73,6 +72,8 @@ private:
     int x, y, width, height;
   };
   void allocate(vtkOpenGLRenderWindow* window, int width, int height, int pyramids);
+  // E on each side, active and bound as frontIrradiance and backIrradiance for `program`.
+  void activate_irradiance(vtkShaderProgram* program) const;
   // The cells that the first pass marked in the front's alpha, lit again (with
   // `refined_samples` points for the lights marked, `cell_samples` for the others) in a block
   // of their own and written back by `scatter` (refined_cells_scatter_vs.glsl); returns how

@@ -21,7 +21,7 @@ uniform sampler2D sourceCovariance1;  // points: xz, yz; S: xx, yy
 uniform sampler2D sourceCovariance2;  // S: zz, xy, xz, yz
 uniform sampler2D sourceCovariance3;  // normals: xx, yy, zz, xy
 uniform sampler2D sourceCovariance4;  // normals: xz, yz
-uniform vec4 sourceLevelRect[2 * SSS_MAX_LEVELS];  // per pyramid: atlas origin xy, size zw
+uniform vec4 sourceLevelRect[SSS_MAX_PYRAMIDS * SSS_MAX_LEVELS];  // atlas origin xy, size zw
 uniform float openingAngle;
 uniform float maxGroupDiffusionLengths;
 uniform float supportRadius;  // mm: beyond it Rd has lost all but 1e-7 of its integral

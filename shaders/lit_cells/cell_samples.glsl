@@ -45,3 +45,36 @@ vec3 cellSampleMean(ivec2 at, vec4 point, int light, int count, out int lit)
   }
   return sum / float(count);
 }
+
+// E_l = albedo E_light cellSampleMean over the lights (eq. 15), summed on the side the surfel's
+// normal faces (front) and on the other (back): each light turns the normal towards its side.
+// A light whose bit is set in `refineLights` takes `refinedSamples` points, the others `count`;
+// `disagree` gets the bits of the lights whose points disagree (an edge or the terminator
+// crosses the cell).
+void cellSides(ivec2 at, vec4 point, int count, int refinedSamples, int refineLights,
+  out vec3 front, out vec3 back, out int disagree)
+{
+  vec3 albedo = texelFetch(surfelAlbedo, at, 0).rgb;
+  vec3 n = texelFetch(surfelShape, at, 0).xyz;
+  front = vec3(0.0);
+  back = vec3(0.0);
+  disagree = 0;
+  for (int l = 0; l < lightCount; ++l)
+  {
+    int lit;
+    int samples = (refineLights & (1 << l)) != 0 ? refinedSamples : count;
+    vec3 E = lightIrradiance[l] * albedo * cellSampleMean(at, point, l, samples, lit);
+    if (dot(n, towardsLight(l, point.xyz)) < 0.0)
+    {
+      back += E;
+    }
+    else
+    {
+      front += E;
+    }
+    if (lit > 0 && lit < samples)
+    {
+      disagree += 1 << l;
+    }
+  }
+}

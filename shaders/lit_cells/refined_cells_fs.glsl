@@ -26,24 +26,9 @@ void main()
   {
     vec3 cell = texelFetch(refinedCell, k, 0).xyz;
     ivec2 at = ivec2(cell.xy);
-    int refineLights = int(cell.z);
-    vec4 point = texelFetch(surfelPoint, at, 0);
-    vec3 albedo = texelFetch(surfelAlbedo, at, 0).rgb;
-    vec3 n = texelFetch(surfelShape, at, 0).xyz;
-    for (int l = 0; l < lightCount; ++l)
-    {
-      int lit;
-      int samples = (refineLights & (1 << l)) != 0 ? cellRefinedSamples : cellSamples;
-      vec3 E = lightIrradiance[l] * albedo * cellSampleMean(at, point, l, samples, lit);
-      if (dot(n, towardsLight(l, point.xyz)) < 0.0)
-      {
-        back += E;
-      }
-      else
-      {
-        front += E;
-      }
-    }
+    int disagree;
+    cellSides(at, texelFetch(surfelPoint, at, 0), cellSamples, cellRefinedSamples, int(cell.z),
+      front, back, disagree);
   }
   gl_FragData[0] = vec4(front, 0.0);
   gl_FragData[1] = vec4(back, 0.0);

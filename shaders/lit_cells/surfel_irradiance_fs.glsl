@@ -26,25 +26,9 @@ void main()
   int refineLights = 0;
   if (point.w > 0.0)
   {
-    vec3 albedo = texelFetch(surfelAlbedo, at, 0).rgb;
-    vec3 n = texelFetch(surfelShape, at, 0).xyz;
-    for (int l = 0; l < lightCount; ++l)
-    {
-      int lit;
-      vec3 E = lightIrradiance[l] * albedo * cellSampleMean(at, point, l, cellSamples, lit);
-      if (dot(n, towardsLight(l, point.xyz)) < 0.0)
-      {
-        back += E;
-      }
-      else
-      {
-        front += E;
-      }
-      if (lit > 0 && lit < cellSamples && cellRefinedSamples > cellSamples)
-      {
-        refineLights += 1 << l;
-      }
-    }
+    int disagree;
+    cellSides(at, point, cellSamples, cellSamples, 0, front, back, disagree);
+    refineLights = cellRefinedSamples > cellSamples ? disagree : 0;
   }
   gl_FragData[0] = vec4(front, float(refineLights));
   gl_FragData[1] = vec4(back, 0.0);
