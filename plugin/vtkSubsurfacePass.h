@@ -306,7 +306,8 @@ public:
   vtkGetMacro(LastHandOverSeconds, double);
   /** The last light move by step in one line: "map 0.11 s, cells 0.21 s, ...". */
   std::string GetLastLightMoveProfile() const;
-  /** NEAR_FAR: the lit cells in the source pyramids (a cell lit on both sides is in both). */
+  /** NEAR_FAR: the lit cells in the source pyramids (a cell lit on both sides is in both;
+   * 0 where the kernel ends inside the near-field table: no far field, no pyramid). */
   vtkGetMacro(LastLitCells, vtkIdType);
   /** NEAR_FAR: the cells whose first samples disagreed for some light (a shadow edge or the
    * terminator crosses them), lit again with eight times as many for those lights. */

@@ -181,7 +181,11 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
     }
     finish_if(finish);
     report.seconds_cells = clock.lap();
-    g.cells.reduce(window, report.lit_cells);
+    report.lit_cells = 0;
+    if (g.split.has_far && !g.cells.reduce(window, g.list, report.lit_cells, error))
+    {
+      return false;
+    }
     finish_if(finish);
     report.seconds_pyramid = clock.lap();
   }

@@ -159,8 +159,21 @@ void LitCells::bake(vtkOpenGLRenderWindow* window, const Material& material)
   atlas_pyramids_ = 0;
 }
 
+void LitCells::allocate_irradiance(vtkOpenGLRenderWindow* window, int width, int height)
+{
+  if (E_[0] && E_[0]->GetWidth() == static_cast<unsigned>(width) &&
+    E_[0]->GetHeight() == static_cast<unsigned>(height))
+  {
+    return;
+  }
+  for (auto& t : E_)
+  {
+    t = float_texture_2d(window, width, height);
+  }
+}
+
 // Each pyramid: level 0 the list's size at (0, p * height), the coarser levels to its right.
-void LitCells::allocate(vtkOpenGLRenderWindow* window, int width, int height, int pyramids)
+void LitCells::allocate_pyramids(vtkOpenGLRenderWindow* window, int width, int height, int pyramids)
 {
   levels_.assign(pyramids, {});
   for (int p = 0; p < pyramids; ++p)
@@ -179,10 +192,6 @@ void LitCells::allocate(vtkOpenGLRenderWindow* window, int width, int height, in
   if (atlas_pyramids_ == pyramids && atlas_width_ == width && atlas_height_ == height)
   {
     return;
-  }
-  for (auto& t : E_)
-  {
-    t = float_texture_2d(window, width, height);
   }
   for (auto& t : source_)
   {
@@ -225,24 +234,19 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   const LightMapAtlas& maps, double disc_radius, int cell_samples, std::size_t& refined,
   std::string& error)
 {
-  const int lights = static_cast<int>(maps.maps.size());
-  allocate(window, list.width(), list.height(), lights > 1 ? kMaxPyramids : 1);
+  lights_ = static_cast<int>(maps.maps.size());
+  allocate_irradiance(window, list.width(), list.height());
   static const std::string pieces =
     std::string(sss_light_maps) + sss_surfel_list + sss_light_visibility + sss_fresnel_table +
     sss_cell_samples;
   static const std::string irradiance_fs = shader_with_pieces(sss_surfel_irradiance_fs, pieces);
   static const std::string refined_fs = shader_with_pieces(sss_refined_cells_fs, pieces);
-  static const std::string sources_fs =
-    shader_with_pieces(sss_lit_cell_sources_fs, sss_surfel_list);
   vtkShaderProgram* scatter = window->GetShaderCache()->ReadyShaderProgram(
     sss_refined_cells_scatter_vs, sss_refined_cells_scatter_fs, "");
   vtkShaderProgram* irradiance = ready_quad(irradiance_quad_, window, irradiance_fs.c_str());
-  vtkShaderProgram* sources = ready_quad(sources_quad_, window, sources_fs.c_str());
-  if (!scatter || !irradiance || !sources ||
-    !ready_quad(refined_quad_, window, refined_fs.c_str()) ||
-    !ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs))
+  if (!scatter || !irradiance || !ready_quad(refined_quad_, window, refined_fs.c_str()))
   {
-    error = "the irradiance, refined cells', cell sources' or pyramid shader did not compile";
+    error = "the irradiance or refined cells' shader did not compile";
     return false;
   }
   vtkOpenGLState* state = window->GetState();
@@ -250,17 +254,6 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   state->PushFramebufferBindings();
   fbo_->SetContext(window);
   fbo_->Bind();
-
-  // The pyramids' atlas cleared: the targets lit_cell_sources_fs.glsl leaves are 0 at level 0.
-  state->vtkglClearColor(0, 0, 0, 0);
-  state->vtkglViewport(0, 0, source_[0]->GetWidth(), source_[0]->GetHeight());
-  for (int k = 0; k < kSources; ++k)
-  {
-    fbo_->AddColorAttachment(k, source_[k]);
-  }
-  fbo_->ActivateDrawBuffers(kSources);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  fbo_->RemoveColorAttachments(kSources);
 
   // Each cell's E on its front and back, summed over the lights.
   fbo_->AddColorAttachment(0, E_[0]);
@@ -280,26 +273,6 @@ bool LitCells::light(vtkOpenGLRenderWindow* window, const SurfelList& list,
   refined = refine(window, list, maps, disc_radius, cell_samples, refined_samples, scatter);
   fresnel_->Deactivate();
   maps.surfel->Deactivate();
-
-  // The pyramids' finest level from both sides (lit_cell_sources_fs.glsl).
-  for (int k = 0; k < kCellSources; ++k)
-  {
-    fbo_->AddColorAttachment(k, source_[k]);
-  }
-  fbo_->ActivateDrawBuffers(kCellSources);
-  window->GetShaderCache()->ReadyShaderProgram(sources);
-  list.set(sources);
-  activate_irradiance(sources);
-  for (int p = 0; p < pyramids(); ++p)
-  {
-    sources->SetUniformi("minorSide", p);
-    const Rect& r = levels_[p][0];
-    state->vtkglViewport(r.x, r.y, r.width, r.height);
-    sources_quad_->Render();
-  }
-  E_[1]->Deactivate();
-  E_[0]->Deactivate();
-  fbo_->RemoveColorAttachments(kCellSources);
   list.deactivate();
   state->PopFramebufferBindings();
   return true;
@@ -392,15 +365,60 @@ std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& li
   return count;
 }
 
-void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
+bool LitCells::reduce(vtkOpenGLRenderWindow* window, const SurfelList& list, std::size_t& lit,
+  std::string& error)
 {
+  static const std::string sources_fs =
+    shader_with_pieces(sss_lit_cell_sources_fs, sss_surfel_list);
+  vtkShaderProgram* sources = ready_quad(sources_quad_, window, sources_fs.c_str());
+  vtkShaderProgram* reduce = ready_quad(reduce_quad_, window, sss_pyramid_reduce_fs);
+  if (!sources || !reduce)
+  {
+    error = "the cell sources' or pyramid shader did not compile";
+    return false;
+  }
+  allocate_pyramids(window, list.width(), list.height(), lights_ > 1 ? kMaxPyramids : 1);
   const int pyramids = this->pyramids();
-  vtkShaderProgram* reduce = reduce_quad_->Program;
   vtkOpenGLState* state = window->GetState();
   PointPassState pass_state(state);
   state->PushFramebufferBindings();
   fbo_->SetContext(window);
   fbo_->Bind();
+
+  // The atlas cleared: the targets lit_cell_sources_fs.glsl leaves are 0 at level 0.
+  state->vtkglClearColor(0, 0, 0, 0);
+  state->vtkglViewport(0, 0, source_[0]->GetWidth(), source_[0]->GetHeight());
+  for (int k = 0; k < kSources; ++k)
+  {
+    fbo_->AddColorAttachment(k, source_[k]);
+  }
+  fbo_->ActivateDrawBuffers(kSources);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  fbo_->RemoveColorAttachments(kSources);
+
+  // The finest level from both sides of each cell (lit_cell_sources_fs.glsl).
+  for (int k = 0; k < kCellSources; ++k)
+  {
+    fbo_->AddColorAttachment(k, source_[k]);
+  }
+  fbo_->ActivateDrawBuffers(kCellSources);
+  window->GetShaderCache()->ReadyShaderProgram(sources);
+  list.activate();
+  list.set(sources);
+  activate_irradiance(sources);
+  for (int p = 0; p < pyramids; ++p)
+  {
+    sources->SetUniformi("minorSide", p);
+    const Rect& r = levels_[p][0];
+    state->vtkglViewport(r.x, r.y, r.width, r.height);
+    sources_quad_->Render();
+  }
+  E_[1]->Deactivate();
+  E_[0]->Deactivate();
+  list.deactivate();
+  fbo_->RemoveColorAttachments(kCellSources);
+
+  // The coarser levels.
   for (int k = 0; k < kSources; ++k)
   {
     fbo_->AddColorAttachment(k, source_[k]);
@@ -450,11 +468,16 @@ void LitCells::reduce(vtkOpenGLRenderWindow* window, std::size_t& lit)
   }
   fbo_->RemoveColorAttachments(kSources);
   state->PopFramebufferBindings();
+  return true;
 }
 
 void LitCells::activate(vtkShaderProgram* program) const
 {
   activate_irradiance(program);
+  if (!source_[0])
+  {
+    return;  // no far field, so no pyramid (reduce)
+  }
   const char* names[kSources] = { "sourcePoint", "sourcePower", "sourceNormal",
     "sourceCovariance0", "sourceCovariance1", "sourceCovariance2", "sourceCovariance3",
     "sourceCovariance4" };
@@ -483,7 +506,10 @@ void LitCells::deactivate() const
 {
   for (auto& t : source_)
   {
-    t->Deactivate();
+    if (t)
+    {
+      t->Deactivate();
+    }
   }
   E_[1]->Deactivate();
   E_[0]->Deactivate();

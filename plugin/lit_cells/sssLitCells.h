@@ -44,20 +44,22 @@ public:
 
   // The Fresnel table of the material's eta.
   void bake(vtkOpenGLRenderWindow* window, const Material& material);
-  // E and the finest level of the source pyramids for the lights of `maps`, from
-  // `cell_samples` points per cell and light (eight times as many for a light whose points
-  // disagree: an edge crosses the cell; `refined` counts those cells); `disc_radius` (mm)
-  // bounds the curvature that lifts a cell's samples.
+  // E for the lights of `maps`, from `cell_samples` points per cell and light (eight times as
+  // many for a light whose points disagree: an edge crosses the cell; `refined` counts those
+  // cells); `disc_radius` (mm) bounds the curvature that lifts a cell's samples.
   bool light(vtkOpenGLRenderWindow* window, const SurfelList& list, const LightMapAtlas& maps,
     double disc_radius, int cell_samples, std::size_t& refined, std::string& error);
-  // The upward pass: the coarser levels of each pyramid from the finest. `lit` counts the
-  // lit cells (twice where both sides are lit).
-  void reduce(vtkOpenGLRenderWindow* window, std::size_t& lit);
+  // The upward pass, only where a far field needs it: the source pyramids' finest level from
+  // E (both sides of each cell) and the coarser levels from it. `lit` counts the lit cells
+  // (twice where both sides are lit).
+  bool reduce(vtkOpenGLRenderWindow* window, const SurfelList& list, std::size_t& lit,
+    std::string& error);
 
-  // far_field.glsl's and near_field.glsl's textures: the pyramids and E, bound for `program`.
+  // far_field.glsl's and near_field.glsl's textures: E and the pyramids (where reduce() built
+  // them), bound for `program`.
   void activate(vtkShaderProgram* program) const;
   void deactivate() const;
-  // The pyramids of the last light(): 1 for one light, else kMaxPyramids.
+  // The pyramids of the last reduce(): 1 for one light, else kMaxPyramids.
   int pyramids() const;
   // Levels of pyramid p: their count and the nodes of a level.
   int levels(int pyramid) const;
@@ -71,7 +73,8 @@ private:
   {
     int x, y, width, height;
   };
-  void allocate(vtkOpenGLRenderWindow* window, int width, int height, int pyramids);
+  void allocate_irradiance(vtkOpenGLRenderWindow* window, int width, int height);
+  void allocate_pyramids(vtkOpenGLRenderWindow* window, int width, int height, int pyramids);
   // E on each side, active and bound as frontIrradiance and backIrradiance for `program`.
   void activate_irradiance(vtkShaderProgram* program) const;
   // The cells that the first pass marked in the front's alpha, lit again (with
@@ -89,6 +92,7 @@ private:
   static constexpr int kCellSources = 5;
   vtkSmartPointer<vtkTextureObject> E_[2], source_[kSources], fresnel_;
   int atlas_pyramids_ = 0, atlas_width_ = 0, atlas_height_ = 0;
+  int lights_ = 0;  // of the last light()
   std::vector<std::vector<Rect>> levels_;  // per pyramid: its levels
   vtkNew<vtkOpenGLFramebufferObject> fbo_;
   std::unique_ptr<vtkOpenGLQuadHelper> irradiance_quad_, refined_quad_, sources_quad_,
