@@ -29,7 +29,8 @@ needs it):
   plain_points_s  one frame of plain VTK points of the same cloud in the same run, seconds
   near_field_mib  GPU memory of the near-field table, MiB
   virtual_points  virtual grid points kept after pruning (paper)
-  lit_cells       surfel cells the light reaches (near-far), or lit map texels (paper)
+  lit_cells       surfel cells the light reaches in the far field's pyramids (near-far; 0
+                  without a far field), or lit map texels (paper)
   err_mean        per-point relative error against the CPU reference (core/reference/error_metric.h):
   err_p99           mean, 99th percentile and max, as fractions (0.01 = 1 %)
   err_max

@@ -182,7 +182,8 @@ bool NearFarStrategy::light(const StepContext& context, const GpuLightMaps& ligh
     finish_if(finish);
     report.seconds_cells = clock.lap();
     report.lit_cells = 0;
-    if (g.split.has_far && !g.cells.reduce(window, g.list, report.lit_cells, error))
+    if (g.split.has_far && !maps.maps.empty() &&
+      !g.cells.reduce(window, g.list, report.lit_cells, error))
     {
       return false;
     }

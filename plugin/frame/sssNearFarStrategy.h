@@ -1,11 +1,12 @@
 // Step 2 on the GPU (the NEAR_FAR strategy), in order: the surfel list (sssSurfelList), each
-// surfel's cell lit through the light maps with its source pyramid (sssLitCells), the near field
+// surfel's cell lit through the light maps and its source pyramid (sssLitCells), the near field
 // from a table the light does not change (sssNearFieldTable) and the far field by a walk of the lit
 // cells' pyramid (sssFarField). The same model as the CPU reference
 // (core/reference/reference_renderer.h): the bake (cells, the near-field table, the surfel list)
 // runs on the CPU when the geometry, the material or a setting changes; a light move lights the
 // cells for all lights in one pass, reduces the lights' shared source pyramids (one, or two where
-// cells are lit on both sides) and runs the near and far field's passes over all surfels.
+// cells are lit on both sides) where there is a far field, and runs the near and far field's
+// passes over all surfels.
 #ifndef sssNearFarStrategy_h
 #define sssNearFarStrategy_h
 
@@ -51,8 +52,9 @@ public:
   void adopt(std::unique_ptr<BakePreparation> prepared) override;
   // Maps of the surfel each texel sees, texels TexelPerRadius of a disc radius.
   LightMapRequest light_map_request(const QualitySettings& settings) const override;
-  // Irradiance, source pyramids and B at every surfel for the given light maps, handed to
-  // the view; with the context's `finish` the report's seconds of each of these steps are exact.
+  // Irradiance, source pyramids (where there is a far field) and B at every surfel for the
+  // given light maps, handed to the view; with the context's `finish` the report's seconds of
+  // each of these steps are exact.
   bool light(const StepContext& context, const GpuLightMaps& maps, const Dipole& dipole,
     SurfelResolve& resolve, vtkOpenGLBufferObject* positions, StepReport& report,
     std::string& error) override;

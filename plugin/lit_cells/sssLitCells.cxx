@@ -156,6 +156,13 @@ void LitCells::bake(vtkOpenGLRenderWindow* window, const Material& material)
   fresnel_->SetMinificationFilter(vtkTextureObject::Linear);
   fresnel_->SetMagnificationFilter(vtkTextureObject::Linear);
   fresnel_->Create2DFromRaw(kFresnelTableSize, 1, 4, VTK_FLOAT, table.data());
+  // The pyramids' atlas goes with the old geometry or material: reduce() makes it anew where
+  // the new one has a far field.
+  for (auto& t : source_)
+  {
+    release_held(window, t);
+  }
+  levels_.clear();
   atlas_pyramids_ = 0;
 }
 

@@ -1,8 +1,9 @@
 // Step 2, what a light move changes: each surfel's cell lit through the light maps (its E,
 // eq. 15, from several samples over the cell tested for visibility, summed over the lights on
 // each side of the surfel: surfel_irradiance_fs.glsl; the cells whose samples disagree lit
-// again with more, packed apart: refined_cells_fs.glsl) and the source pyramids over the surfel
-// list (lit_cell_sources_fs.glsl, pyramid_reduce_fs.glsl): per node the power-weighted point,
+// again with more, packed apart: refined_cells_fs.glsl) and, where there is a far field, the
+// source pyramids over the surfel list (reduce: lit_cell_sources_fs.glsl,
+// pyramid_reduce_fs.glsl): per node the power-weighted point,
 // normal and power of the cells under it and their second moments, for the far field's walk
 // (far_field.glsl). Eq. 17 is linear in E, so the lights share the pyramids: one holds each
 // cell's more lit side, one its other side (one light: a single pyramid), whatever the number

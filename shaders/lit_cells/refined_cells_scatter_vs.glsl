@@ -1,6 +1,6 @@
 //VTK::System::Dec
-// Step 2: one GL point per refined cell (refined_cells_fs.glsl), drawn at the cell's texel of the
-// light's finest pyramid level; vertex i reads texel i of the refined block.
+// Step 2: one GL point per refined cell (refined_cells_fs.glsl), drawn at the cell's texel of E
+// (the surfel list's layout); vertex i reads texel i of the refined block.
 
 in vec2 cellTexel;     // the cell's texel in the surfel list
 uniform vec2 listSize;
