@@ -297,7 +297,11 @@ std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& li
   fbo_->ActivateReadBuffer(0);
   glReadPixels(0, 0, list_width, list_height, GL_RGBA, GL_FLOAT, E.data());
   fbo_->RemoveColorAttachments(1);
-  std::vector<float> texels, cells;  // the cells' texels; and with their lights' bits
+  struct Marked
+  {
+    int x, y, lights;
+  };
+  std::vector<Marked> marked;
   for (int y = 0; y < list_height; ++y)
   {
     for (int x = 0; x < list_width; ++x)
@@ -305,21 +309,39 @@ std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& li
       const float lights = E[4 * (std::size_t(y) * list_width + x) + 3];
       if (lights > 0.5f)
       {
-        texels.insert(texels.end(), { float(x), float(y) });
-        cells.insert(cells.end(), { float(x), float(y), lights, 0.0f });
+        marked.push_back({ x, y, static_cast<int>(lights + 0.5f) });
       }
     }
   }
-  const std::size_t count = texels.size() / 2;
+  const std::size_t count = marked.size();
   if (count == 0)
   {
     return 0;
   }
+  // Cells marked for the same lights side by side, sixteen to a 4 x 4 square of the block
+  // (the order refined_cells_scatter_vs.glsl reads them back in): a fragment block then runs the refined count of
+  // points for the lights its cells share, not for every light some cell of it marks.
+  std::stable_sort(marked.begin(), marked.end(),
+    [](const Marked& a, const Marked& b) { return a.lights < b.lights; });
+  const int width = std::max(4, list_width / 4 * 4);
+  const int squares_per_row = width / 4;
+  const std::size_t squares = (count + 15) / 16;
+  const int height = static_cast<int>(4 * ((squares + squares_per_row - 1) / squares_per_row));
+  std::vector<float> texels, cells(4 * std::size_t(width) * height, 0.0f);
+  texels.reserve(2 * count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const std::size_t square = i / 16, within = i % 16;
+    const std::size_t x = 4 * (square % squares_per_row) + within % 4;
+    const std::size_t y = 4 * (square / squares_per_row) + within / 4;
+    texels.insert(texels.end(), { float(marked[i].x), float(marked[i].y) });
+    float* cell = &cells[4 * (y * width + x)];
+    cell[0] = float(marked[i].x);
+    cell[1] = float(marked[i].y);
+    cell[2] = float(marked[i].lights);
+  }
 
-  // Lit again in a block of their own, row by row.
-  const int width = list_width;
-  const int height = static_cast<int>((count + width - 1) / width);
-  cells.resize(4 * std::size_t(width) * height, 0.0f);
+  // Lit again in a block of their own.
   if (!refined_cell_)
   {
     refined_cell_ = float_texture_2d(window, width, height);
@@ -338,7 +360,6 @@ std::size_t LitCells::refine(vtkOpenGLRenderWindow* window, const SurfelList& li
   SetCellUniforms(program, list, maps, fresnel_, disc_radius);
   refined_cell_->Activate();
   program->SetUniformi("refinedCell", refined_cell_->GetTextureUnit());
-  program->SetUniformi("refinedCount", static_cast<int>(count));
   program->SetUniformi("cellSamples", cell_samples);
   program->SetUniformi("cellRefinedSamples", refined_samples);
   fbo_->AddColorAttachment(0, refined_E_[0]);
